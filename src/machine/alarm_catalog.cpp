@@ -1,0 +1,62 @@
+#include "machine/alarm_catalog.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace drycut {
+namespace {
+
+using S = Severity;
+using A = AlarmSource;
+
+// Sorted by number. Texts are paraphrased; numbers per sinumerik-facts.md §5.
+constexpr std::array kCatalog{
+    AlarmInfo{10720, S::Alarm, "Software limit switch violated", A::Memory},
+    AlarmInfo{10750, S::Alarm, "Tool radius compensation activated without tool number", A::Memory},
+    AlarmInfo{10751, S::Alarm, "Danger of collision due to tool radius compensation", A::Memory},
+    AlarmInfo{10757, S::Alarm, "Compensation plane changed while tool radius compensation is active", A::Siemens},
+    AlarmInfo{10762, S::Alarm, "Too many empty blocks between two traversing blocks with tool radius compensation", A::Siemens},
+    AlarmInfo{10763, S::Warning, "Path component of the block in the compensation plane becomes zero (block skipped by bottleneck detection)", A::Siemens},
+    AlarmInfo{10860, S::Alarm, "Feedrate not programmed", A::ThirdParty},
+    AlarmInfo{10950, S::Alarm, "Arc-length function too inaccurate", A::Siemens},
+    AlarmInfo{12010, S::Alarm, "Address programmed too often in block", A::ThirdParty},
+    AlarmInfo{12070, S::Alarm, "Too many syntax-defining G functions", A::ThirdParty},
+    AlarmInfo{12080, S::Alarm, "Syntax error", A::ThirdParty},
+    AlarmInfo{12150, S::Alarm, "Operation not compatible with data type", A::ThirdParty},
+    AlarmInfo{12160, S::Alarm, "Value outside range", A::ThirdParty},
+    AlarmInfo{12170, S::Alarm, "Name defined several times", A::ThirdParty},
+    AlarmInfo{12410, S::Alarm, "Wrong index type", A::ThirdParty},
+    AlarmInfo{12430, S::Alarm, "Index invalid", A::ThirdParty},
+    AlarmInfo{12470, S::Alarm, "G function unknown", A::ThirdParty},
+    AlarmInfo{12550, S::Alarm, "Name not defined or option not available", A::ThirdParty},
+    AlarmInfo{12630, S::Alarm, "Skip identifier or label not allowed in control-structure block", A::ThirdParty},
+    AlarmInfo{12640, S::Alarm, "Invalid nesting of control structures", A::ThirdParty},
+    AlarmInfo{14011, S::Alarm, "Called program does not exist", A::Memory},
+    AlarmInfo{14040, S::Alarm, "Error in end point of circle", A::Siemens},
+    AlarmInfo{14048, S::Alarm, "Wrong number of revolutions in circle programming", A::ThirdParty},
+    AlarmInfo{14051, S::Alarm, "Arithmetic error in part program", A::ThirdParty},
+    AlarmInfo{14060, S::Alarm, "Invalid skip level with differential block skip", A::ThirdParty},
+    AlarmInfo{14080, S::Alarm, "Jump destination not found", A::ThirdParty},
+    AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
+    AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
+    AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
+    // drycut's own numbers: situations the control certainly rejects, but whose number no
+    // public source gives.
+    AlarmInfo{990001, S::Alarm, "Too few spline blocks in a window of 10 blocks", A::Drycut},
+    AlarmInfo{990002, S::Warning, "Command not modelled by drycut; block executed without it", A::Drycut},
+    AlarmInfo{990003, S::Alarm, "Program nesting deeper than 16 levels", A::Drycut},
+    AlarmInfo{990004, S::Alarm, "Step limit reached (endless loop?)", A::Drycut},
+    AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
+};
+
+}  // namespace
+
+std::span<const AlarmInfo> alarm_catalog() { return kCatalog; }
+
+const AlarmInfo* find_alarm(int number) {
+  auto it = std::lower_bound(kCatalog.begin(), kCatalog.end(), number,
+                             [](const AlarmInfo& a, int n) { return a.number < n; });
+  return (it != kCatalog.end() && it->number == number) ? &*it : nullptr;
+}
+
+}  // namespace drycut

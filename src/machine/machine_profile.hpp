@@ -1,0 +1,89 @@
+#pragma once
+// Machine data: everything a machine builder sets on the real control, as one profile shared by
+// all programs of a machine. Units inside: mm, s, rad. The JSON form carries units in its keys
+// (docs/machine-profile.md documents every field and why the default has its value).
+#include <array>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace drycut::machine {
+
+struct AxisData {
+  std::string name;               // "X", "Y", "Z"
+  double min_mm = -1e9;           // software limit switches (alarm 10720 outside)
+  double max_mm = 1e9;
+  double max_velocity_mm_s = 0;   // MD32000 MAX_AX_VELO
+  double max_accel_mm_s2 = 0;     // MD32300 MAX_AX_ACCEL
+  double max_jerk_mm_s3 = 0;      // MD32431 MAX_AX_JERK
+};
+
+struct ToolEdge {
+  int d = 1;               // D number
+  double radius_mm = 0;    // cutter radius (tool radius compensation)
+  double length_mm = 0;    // length (informational; no length compensation modelled on Z yet)
+};
+
+struct Tool {
+  std::string name;        // T="name" (case-sensitive)
+  int number = 0;          // T<n>
+  std::vector<ToolEdge> edges;
+};
+
+struct MachineProfile {
+  std::string name;
+  std::array<AxisData, 3> axes;                 // X, Y, Z path axes
+
+  // Interpolation and look-ahead.
+  double ipo_cycle_s = 0.004;                   // MD10050 × MD10070
+  double max_accel_ovl_factor = 1.2;            // MD32310
+  double path_jerk_mm_s3 = 0;                   // MD20600 MAX_PATH_JERK
+  double soft_accel_factor = 1.0;               // MD32433 SOFT_ACCEL_FACTOR
+  double curv_effect_on_path_accel = 0.75;      // MD20602
+  int lookahead_blocks = 64;                    // effective look-ahead depth (MD28060 bound)
+  double short_block_factor = 0.9;              // v <= factor * L / T_IPO
+  double g0_accel_factor = 1.0;                 // MD32434 G00_ACCEL_FACTOR
+  double g0_jerk_factor = 1.0;                  // MD32435 G00_JERK_FACTOR
+  double tool_change_time_s = 0;                // M6 duration (not derivable from the program)
+
+  // Interpreter data.
+  std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...
+  std::map<std::string, Eigen::Vector3d> work_offsets;  // "G54" -> offset (mm)
+  std::vector<Tool> tools;
+  Eigen::Vector3d start_position = Eigen::Vector3d::Zero();  // in the work coordinate system of the first offset
+  double circle_error_const_mm = 0.01;          // MD21000 CIRCLE_ERROR_CONST
+  double circle_error_factor = 0.001;           // MD21010 CIRCLE_ERROR_FACTOR
+  int cubic_spline_blocks = 8;                  // MD20160 CUBIC_SPLINE_BLOCKS (C-spline window)
+  bool cubic_spline_global = false;             // solve the C spline over the whole run instead
+  int cutcom_maxnum_check_blocks = 3;           // MD20240
+  int cutcom_maxnum_dummy_blocks = 3;           // MD20250
+
+  const Tool* find_tool(const std::string& name) const {
+    for (const auto& t : tools)
+      if (t.name == name) return &t;
+    return nullptr;
+  }
+  const Tool* find_tool(int number) const {
+    for (const auto& t : tools)
+      if (t.number == number) return &t;
+    return nullptr;
+  }
+};
+
+// A profile that fails validation: the message names the offending key.
+class ProfileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Parses and validates a profile (unknown key, wrong unit, negative limit -> ProfileError).
+MachineProfile load_profile_json(const std::string& json_text, const std::string& origin);
+MachineProfile load_profile_file(const std::string& path);
+// The embedded TAJMAC-ZPS MCV 1210 profile.
+const MachineProfile& default_profile();
+
+}  // namespace drycut::machine

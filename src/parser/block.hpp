@@ -1,0 +1,98 @@
+#pragma once
+// The block stream's unit: one executed NC block with every expression already evaluated.
+// The ProgramLoader produces these after following calls, jumps and control structures; the
+// interpreter gives them meaning. Syntax only: nothing here knows what G1 does.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace drycut::parser {
+
+// How an address value was written: plain `X5`, or `X=AC(5)` / `X=IC(5)`.
+enum class ValueMode : uint8_t { Default, Absolute, Incremental };
+
+// An address with a numeric value: axis words X Y Z A B C, circle I J K I1 J1 K1, F S D H,
+// T<n>, and the extended addresses PW SD PL CR AR TURN AP RP ... Name is upper case.
+struct AddressWord {
+  std::string name;
+  double value = 0.0;
+  ValueMode mode = ValueMode::Default;
+  uint32_t column = 0;
+};
+
+struct GWord {
+  int code = 0;  // G1 -> 1, G642 -> 642
+  uint32_t column = 0;
+};
+
+struct MWord {
+  int code = 0;        // M3 -> 3
+  int extension = -1;  // M1=3 -> extension 1 (spindle number); -1 = none
+  uint32_t column = 0;
+};
+
+// A procedure argument: a number, a string, or a bare name (axis names in SPLINEPATH).
+using Argument = std::variant<double, std::string>;
+
+// A named command or procedure call: ASPLINE, SOFT, BTAN, G642 is a GWord not a command,
+// CYCLE832(0.01,1), MSG("text"), SPLINEPATH(1,X,Y,Z), TRANS (its axis words are addresses).
+struct CommandWord {
+  std::string name;  // upper case
+  std::vector<Argument> args;
+  bool has_parentheses = false;
+  uint32_t column = 0;
+};
+
+struct Block {
+  std::shared_ptr<const std::string> file;  // shared by all blocks of one file
+  uint32_t line = 0;
+  std::string text;                // the block as written, trimmed, decoded to UTF-8
+  std::optional<int64_t> number;   // N123 or :123
+  int program_level = 0;           // 0 = main program, 1.. = subprogram nesting depth
+  std::vector<GWord> g;
+  std::vector<MWord> m;
+  std::vector<AddressWord> addresses;
+  std::vector<CommandWord> commands;
+  std::optional<std::string> tool_name;  // T="name" (case preserved)
+
+  // Empties the block but keeps the vectors' capacity (the loader reuses one Block).
+  void clear() {
+    file.reset();
+    line = 0;
+    text.clear();
+    number.reset();
+    program_level = 0;
+    g.clear();
+    m.clear();
+    addresses.clear();
+    commands.clear();
+    tool_name.reset();
+  }
+
+  const AddressWord* find_address(std::string_view name) const {
+    for (const auto& a : addresses)
+      if (a.name == name) return &a;
+    return nullptr;
+  }
+  bool has_g(int code) const {
+    for (const auto& w : g)
+      if (w.code == code) return true;
+    return false;
+  }
+  bool has_m(int code) const {
+    for (const auto& w : m)
+      if (w.code == code) return true;
+    return false;
+  }
+  const CommandWord* find_command(std::string_view name) const {
+    for (const auto& c : commands)
+      if (c.name == name) return &c;
+    return nullptr;
+  }
+};
+
+}  // namespace drycut::parser
