@@ -1,0 +1,11 @@
+#pragma once
+// The subcommands of the drycut command line. Each returns the process exit code:
+// 0 = ran clean, 1 = the program raised alarms, 2 = usage or I/O error.
+#include <CLI/CLI.hpp>
+
+namespace drycut::app {
+
+// Each registers its subcommand (options and callback) on the application.
+void register_check(CLI::App& app);
+
+}  // namespace drycut::app
