@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   });
 
   drycut::app::register_check(app);
+  drycut::app::register_path(app);
 
   try {
     app.parse(argc, argv);

@@ -37,6 +37,20 @@ struct DynamicsMode {
   bool exact_stop_this_block = false;  // G9
 };
 
+// Tool radius compensation requested for the element (G40/G41/G42 and their companions). The
+// interpreter records it; the compensation stage (src/interp/cutter_compensation) applies it.
+enum class CompensationSide { None, Left /*G41*/, Right /*G42*/ };
+
+struct CompensationRequest {
+  CompensationSide side = CompensationSide::None;
+  double radius_mm = 0.0;        // cutter radius of the active tool edge (D)
+  bool intersection_corners = false;  // G451 (true) or G450 transition arcs (false)
+  bool contour_approach = false;      // KONT (true) or NORM (false)
+  bool collision_detection = false;   // CDON
+  double disc = 0.0;                  // DISC= (0..100) for G450
+  int plane_normal_axis = 2;          // 2 = G17 (XY), 1 = G18 (ZX), 0 = G19 (YZ)
+};
+
 struct PathElement {
   ElementKind kind = ElementKind::Line;
   geometry::CurvePtr curve;      // set for Line, Arc, SplineSpan
@@ -45,6 +59,7 @@ struct PathElement {
   DynamicsMode dynamics;
   double dwell_s = 0.0;          // Dwell
   StopKind stop = StopKind::None;
+  CompensationRequest compensation;
   std::string label;             // what produced it: "G1", "G2", "ASPLINE", "M0", "M6 FR_4", "G4"
   BlockRef source;               // the block it belongs to
 

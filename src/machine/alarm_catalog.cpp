@@ -47,6 +47,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990003, S::Alarm, "Program nesting deeper than 16 levels", A::Drycut},
     AlarmInfo{990004, S::Alarm, "Step limit reached (endless loop?)", A::Drycut},
     AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
+    AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
 };
 
 }  // namespace

@@ -1,0 +1,48 @@
+// `drycut path PROGRAM [--csv FILE] [--step MM]`: the interpolated programmed path as CSV.
+#include <cstdio>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/exit_code.hpp"
+#include "app/program_pipeline.hpp"
+#include "report/path_csv_writer.hpp"
+
+namespace drycut::app {
+
+namespace {
+struct PathOptions {
+  ProgramOptions program;
+  std::string csv;
+  double step_mm = 0.01;
+};
+}  // namespace
+
+void register_path(CLI::App& app) {
+  auto options = std::make_shared<PathOptions>();
+  CLI::App* cmd = app.add_subcommand("path", "Write the interpolated programmed path as CSV samples");
+  add_program_options(*cmd, options->program);
+  cmd->add_option("--csv", options->csv, "Output file (default: standard output)");
+  cmd->add_option("--step", options->step_mm, "Sample spacing along the path in mm")
+      ->default_val(0.01)
+      ->check(CLI::PositiveNumber);
+  cmd->callback([options] {
+    try {
+      const machine::MachineProfile profile = load_machine(options->program);
+      std::FILE* out = stdout;
+      std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
+      if (!options->csv.empty()) {
+        file.reset(std::fopen(options->csv.c_str(), "w"));
+        if (!file) throw UsageError("cannot write " + options->csv);
+        out = file.get();
+      }
+      report::PathCsvWriter writer(out, options->step_mm);
+      PipelineOutcome outcome = run_program(options->program, profile, writer);
+      throw ExitRequest{report_outcome(outcome)};
+    } catch (const UsageError& e) {
+      std::fprintf(stderr, "drycut path: %s\n", e.what());
+      throw ExitRequest{kExitUsage};
+    }
+  });
+}
+
+}  // namespace drycut::app

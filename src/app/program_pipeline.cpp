@@ -1,0 +1,69 @@
+#include "app/program_pipeline.hpp"
+
+#include <cstdio>
+
+#include "app/exit_code.hpp"
+#include "interp/interpreter.hpp"
+#include "parser/program_loader.hpp"
+
+namespace drycut::app {
+
+void add_program_options(CLI::App& cmd, ProgramOptions& options) {
+  cmd.add_option("PROGRAM", options.program, "Main program (.MPF)")->required();
+  cmd.add_option("--search-path", options.search_path,
+                 "Folder searched for subprograms after the main program's folder (repeatable)");
+  cmd.add_option("--machine", options.machine_file,
+                 "Machine profile JSON (default: the embedded TAJMAC-ZPS MCV 1210)");
+  cmd.add_option("--max-steps", options.max_steps,
+                 "Blocks executed before the run is stopped as an endless loop")
+      ->default_val(options.max_steps);
+  cmd.add_flag("-q,--quiet", options.quiet, "No progress display");
+}
+
+machine::MachineProfile load_machine(const ProgramOptions& options) {
+  if (options.machine_file.empty()) return machine::default_profile();
+  try {
+    return machine::load_profile_file(options.machine_file);
+  } catch (const machine::ProfileError& e) {
+    throw UsageError(options.machine_file + ": " + e.what());
+  }
+}
+
+PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
+                            interp::ElementSink& sink) {
+  PipelineOutcome outcome;
+  parser::LoaderOptions loader_options;
+  for (const auto& dir : options.search_path) loader_options.search_path.emplace_back(dir);
+  loader_options.max_steps = options.max_steps;
+  parser::ProgramLoader loader(loader_options, outcome.diagnostics);
+  loader.open_main(options.program);  // UsageError when the file cannot be read
+
+  interp::Interpreter interpreter(profile, sink, outcome.diagnostics);
+  parser::Block block;
+  try {
+    while (loader.next(block)) {
+      interpreter.execute(block);
+      if (interpreter.ended()) break;
+    }
+  } catch (const AlarmError& e) {
+    outcome.diagnostics.report(e.alarm());
+    outcome.alarm = true;
+  }
+  try {
+    interpreter.finish();
+  } catch (const AlarmError& e) {
+    // Only the first alarm stops a real control; a second one while finishing is still told.
+    outcome.diagnostics.report(e.alarm());
+    outcome.alarm = true;
+  }
+  outcome.blocks = loader.blocks_executed();
+  outcome.programs_used = loader.programs_used();
+  return outcome;
+}
+
+int report_outcome(const PipelineOutcome& outcome) {
+  for (const Alarm& a : outcome.diagnostics.items()) std::fprintf(stderr, "%s\n", a.format().c_str());
+  return outcome.alarm || outcome.diagnostics.has_alarms() ? kExitAlarm : kExitOk;
+}
+
+}  // namespace drycut::app

@@ -1,0 +1,79 @@
+#pragma once
+// The interpreter: gives the evaluated blocks of the loader their SINUMERIK meaning and emits the
+// canonical stream of path elements (lines, arcs, spline spans, dwells, stops, tool changes).
+// It knows meaning, not time: feed and dynamics modes are recorded on the elements for the planner.
+//
+// Coordinates: elements are in machine coordinates (programmed position + work offset G54..G57 +
+// programmable translation TRANS/ATRANS); with the default profile's zero G54 they equal the
+// programmed coordinates.
+#include <array>
+#include <set>
+#include <string>
+
+#include "interp/modal_state.hpp"
+#include "interp/path_element.hpp"
+#include "interp/spline_block_quota.hpp"
+#include "interp/spline_run.hpp"
+#include "machine/alarm.hpp"
+#include "machine/machine_profile.hpp"
+#include "parser/block.hpp"
+
+namespace drycut::interp {
+
+struct InterpreterOptions {
+  bool optional_stop_active = false;  // M1 stops only when the operator selected it
+};
+
+class Interpreter {
+ public:
+  Interpreter(const machine::MachineProfile& profile, ElementSink& sink, Diagnostics& diagnostics,
+              InterpreterOptions options = {});
+
+  // Executes one block; throws AlarmError when the control would raise an alarm.
+  void execute(const parser::Block& block);
+  // End of the block stream: completes an open spline run and tells the sink.
+  void finish();
+
+  const ModalState& state() const { return state_; }
+  const Eigen::Vector3d& position() const { return position_; }
+  bool ended() const { return ended_; }
+
+ private:
+  struct BlockContext;
+
+  void apply_g_words(BlockContext& ctx);
+  void apply_commands(BlockContext& ctx);
+  void apply_addresses(BlockContext& ctx);
+  void apply_m_words(BlockContext& ctx);
+  void execute_motion(BlockContext& ctx);
+  void emit_line(BlockContext& ctx, const Eigen::Vector3d& target);
+  void emit_arc(BlockContext& ctx, const Eigen::Vector3d& target);
+  void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
+  void end_spline_run(const Eigen::Vector3d* next_direction);
+  void emit(PathElement element);
+  void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
+  PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
+  double feed_mm_s(const BlockContext& ctx) const;
+  Eigen::Vector3d frame_offset(const BlockContext& ctx) const;
+  Eigen::Vector3d target_position(BlockContext& ctx) const;
+  void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
+  [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
+                          uint32_t column = 0) const;
+  void warn_once(const BlockContext& ctx, const std::string& what, uint32_t column);
+
+  const machine::MachineProfile& profile_;
+  ElementSink& sink_;
+  Diagnostics& diagnostics_;
+  InterpreterOptions options_;
+  ModalState state_;
+  Eigen::Vector3d position_;
+  bool has_last_tangent_ = false;
+  Eigen::Vector3d last_tangent_ = Eigen::Vector3d::UnitX();
+  SplineRun spline_;
+  SplineBlockQuota quota_;
+  DynamicsMode last_dynamics_;
+  bool ended_ = false;
+  std::set<std::string> warned_;
+};
+
+}  // namespace drycut::interp

@@ -1,0 +1,97 @@
+#include "interp/modal_state.hpp"
+
+#include <array>
+#include <utility>
+
+namespace drycut::interp {
+namespace {
+
+// Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
+using Setter = void (*)(ModalState&);
+constexpr std::array<std::pair<std::string_view, Setter>, 41> kCodes{{
+    {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
+    {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
+    {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
+    {"G3", [](ModalState& s) { s.motion = MotionMode::ArcCcw; }},
+    {"CIP", [](ModalState& s) { s.motion = MotionMode::ArcThroughPoint; }},
+    {"CT", [](ModalState& s) { s.motion = MotionMode::ArcTangent; }},
+    {"ASPLINE", [](ModalState& s) { s.motion = MotionMode::ASpline; }},
+    {"BSPLINE", [](ModalState& s) { s.motion = MotionMode::BSpline; }},
+    {"CSPLINE", [](ModalState& s) { s.motion = MotionMode::CSpline; }},
+    {"G17", [](ModalState& s) { s.plane = PlaneSelect::G17; }},
+    {"G18", [](ModalState& s) { s.plane = PlaneSelect::G18; }},
+    {"G19", [](ModalState& s) { s.plane = PlaneSelect::G19; }},
+    {"G90", [](ModalState& s) { s.absolute = true; }},
+    {"G91", [](ModalState& s) { s.absolute = false; }},
+    {"G70", [](ModalState& s) { s.inch = true; s.inch_feed = false; }},
+    {"G71", [](ModalState& s) { s.inch = false; s.inch_feed = false; }},
+    {"G700", [](ModalState& s) { s.inch = true; s.inch_feed = true; }},
+    {"G710", [](ModalState& s) { s.inch = false; s.inch_feed = false; }},
+    {"G94", [](ModalState& s) { s.feed_per_rev = false; }},
+    {"G95", [](ModalState& s) { s.feed_per_rev = true; }},
+    {"G60", [](ModalState& s) { s.transition = TransitionMode::ExactStop; }},
+    {"G64", [](ModalState& s) { s.transition = TransitionMode::Continuous; }},
+    {"G641", [](ModalState& s) { s.transition = TransitionMode::SmoothDistance; }},
+    {"G642", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; }},
+    {"G643", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; }},
+    {"G645", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; }},
+    {"BRISK", [](ModalState& s) { s.accel = AccelProfile::Brisk; }},
+    {"SOFT", [](ModalState& s) { s.accel = AccelProfile::Soft; }},
+    {"BNAT", [](ModalState& s) { s.spline_begin = SplineCondition::Natural; }},
+    {"BTAN", [](ModalState& s) { s.spline_begin = SplineCondition::Tangent; }},
+    {"BAUTO", [](ModalState& s) { s.spline_begin = SplineCondition::Auto; }},
+    {"ENAT", [](ModalState& s) { s.spline_end = SplineCondition::Natural; }},
+    {"ETAN", [](ModalState& s) { s.spline_end = SplineCondition::Tangent; }},
+    {"EAUTO", [](ModalState& s) { s.spline_end = SplineCondition::Auto; }},
+    {"G40", [](ModalState& s) { s.compensation = CompensationSide::None; }},
+    {"G450", [](ModalState& s) { s.intersection_corners = false; }},
+    {"G451", [](ModalState& s) { s.intersection_corners = true; }},
+    {"NORM", [](ModalState& s) { s.contour_approach = false; }},
+    {"KONT", [](ModalState& s) { s.contour_approach = true; }},
+    {"CDON", [](ModalState& s) { s.collision_detection = true; }},
+    {"CDOF", [](ModalState& s) { s.collision_detection = false; }},
+}};
+
+}  // namespace
+
+bool ModalState::apply_code(std::string_view name) {
+  for (const auto& [code, set] : kCodes) {
+    if (code == name) {
+      set(*this);
+      return true;
+    }
+  }
+  return false;
+}
+
+ModalState reset_state(const machine::MachineProfile& profile) {
+  ModalState state;
+  for (const auto& code : profile.reset_gcodes) {
+    if (code == "G500" || code == "G54" || code == "G55" || code == "G56" || code == "G57") {
+      state.work_offset = code;
+      auto it = profile.work_offsets.find(code);
+      state.work_offset_mm = it != profile.work_offsets.end() ? it->second : Eigen::Vector3d::Zero();
+      continue;
+    }
+    if (!state.apply_code(code))
+      throw machine::ProfileError("reset_gcodes: '" + code + "' is not a modal code drycut knows");
+  }
+  return state;
+}
+
+std::string_view motion_mode_name(MotionMode mode) {
+  switch (mode) {
+    case MotionMode::Rapid: return "G0";
+    case MotionMode::Linear: return "G1";
+    case MotionMode::ArcCw: return "G2";
+    case MotionMode::ArcCcw: return "G3";
+    case MotionMode::ArcThroughPoint: return "CIP";
+    case MotionMode::ArcTangent: return "CT";
+    case MotionMode::ASpline: return "ASPLINE";
+    case MotionMode::BSpline: return "BSPLINE";
+    case MotionMode::CSpline: return "CSPLINE";
+  }
+  return "?";
+}
+
+}  // namespace drycut::interp

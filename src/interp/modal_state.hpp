@@ -1,0 +1,69 @@
+#pragma once
+// The interpreter's modal state: everything a block leaves behind for the next one (G groups,
+// units, frames, tool and edge, feed, spindle, dynamics modes, spline conditions, compensation).
+// Reset values come from the machine profile's reset_gcodes (the MD20150 analogue), not from code.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "interp/path_element.hpp"
+#include "machine/machine_profile.hpp"
+
+namespace drycut::interp {
+
+// G group 1 (with the spline types, which are members of it on the SINUMERIK).
+enum class MotionMode { Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline };
+
+enum class PlaneSelect { G17, G18, G19 };
+
+enum class SplineCondition { Natural, Tangent, Auto };  // BNAT/ENAT, BTAN/ETAN, BAUTO/EAUTO
+
+enum class SpindleState { Stopped, Clockwise, CounterClockwise };
+
+struct ModalState {
+  MotionMode motion = MotionMode::Linear;
+  PlaneSelect plane = PlaneSelect::G17;
+  bool absolute = true;             // G90 (true) / G91
+  bool inch = false;                // G70/G700
+  bool inch_feed = false;           // G700: the feed is converted too
+  bool feed_per_rev = false;        // G95 (true) / G94
+  std::string work_offset = "G500"; // G500, G54..G57
+  Eigen::Vector3d work_offset_mm = Eigen::Vector3d::Zero();
+  Eigen::Vector3d translation_mm = Eigen::Vector3d::Zero();  // TRANS/ATRANS
+  double feed = 0.0;                // as programmed (mm/min, in/min, or per revolution)
+  double spindle_rpm = 0.0;
+  SpindleState spindle = SpindleState::Stopped;
+  std::optional<std::string> prepared_tool;  // T selected, waiting for M6
+  std::optional<std::string> active_tool;    // after M6
+  int edge = 0;                     // D number (0 = no offset)
+  double tool_radius_mm = 0.0;      // radius of the active edge
+  TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
+  AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
+  SplineCondition spline_begin = SplineCondition::Natural;
+  SplineCondition spline_end = SplineCondition::Natural;
+  int bspline_degree = 3;           // SD=
+  CompensationSide compensation = CompensationSide::None;  // G40/G41/G42
+  bool intersection_corners = false;  // G451 / G450
+  bool contour_approach = false;      // KONT / NORM
+  bool collision_detection = false;   // CDON / CDOF
+  double disc = 0.0;                  // DISC=
+
+  // Applies one reset/program code by name ("G64", "SOFT", "BTAN", ...). Returns false if the
+  // name is not a modal code this state knows (the caller decides whether that is an error).
+  bool apply_code(std::string_view name);
+
+  int plane_normal_axis() const { return plane == PlaneSelect::G17 ? 2 : plane == PlaneSelect::G18 ? 1 : 0; }
+  bool spline_mode() const {
+    return motion == MotionMode::ASpline || motion == MotionMode::BSpline || motion == MotionMode::CSpline;
+  }
+};
+
+// The state at program start: every code of the profile's reset list applied in order.
+// Throws machine::ProfileError naming a reset code this state does not know.
+ModalState reset_state(const machine::MachineProfile& profile);
+
+std::string_view motion_mode_name(MotionMode mode);
+
+}  // namespace drycut::interp

@@ -1,0 +1,54 @@
+#include "interp/spline_run.hpp"
+
+#include <utility>
+
+namespace drycut::interp {
+
+void SplineRun::begin(MotionMode mode, const geometry::Vec3& start,
+                      const geometry::SplineEnd& begin_condition, int degree, int cubic_window) {
+  mode_ = mode;
+  switch (mode) {
+    case MotionMode::ASpline: builder_ = geometry::make_akima_builder(begin_condition); break;
+    case MotionMode::CSpline: builder_ = geometry::make_cubic_builder(begin_condition, cubic_window); break;
+    default: builder_ = geometry::make_nurbs_builder(degree); break;
+  }
+  waiting_.clear();
+  first_waiting_ = 1;
+  next_index_ = 0;
+  has_last_tangent_ = false;
+  builder_->add_point(start, 1.0, 0.0);
+  next_index_ = 1;
+}
+
+void SplineRun::add(const geometry::Vec3& point, double weight, double knot_span, PathElement element) {
+  waiting_.push_back(std::move(element));
+  builder_->add_point(point, weight, knot_span);
+  ++next_index_;
+}
+
+void SplineRun::finish(const geometry::SplineEnd& end_condition) { builder_->finish(end_condition); }
+
+void SplineRun::drain(ElementSink& sink) {
+  geometry::SplineSpan span;
+  while (builder_->pop_span(span)) {
+    // Blocks whose spans are all out (a NURBS block may own none) leave the queue.
+    size_t index = span.block_index < first_waiting_ ? first_waiting_ : span.block_index;
+    while (first_waiting_ < index && waiting_.size() > 1) {
+      waiting_.pop_front();
+      ++first_waiting_;
+    }
+    PathElement element = waiting_.front();
+    element.kind = ElementKind::SplineSpan;
+    element.curve = span.curve;
+    last_tangent_ = span.curve->at(span.curve->length()).tangent;
+    has_last_tangent_ = true;
+    sink.consume(std::move(element));
+  }
+}
+
+void SplineRun::reset() {
+  builder_.reset();
+  waiting_.clear();
+}
+
+}  // namespace drycut::interp
