@@ -8,5 +8,6 @@ namespace drycut::app {
 // Each registers its subcommand (options and callback) on the application.
 void register_check(CLI::App& app);
 void register_path(CLI::App& app);
+void register_generate(CLI::App& app);
 
 }  // namespace drycut::app

@@ -5,6 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include <Eigen/Geometry>
+
 namespace drycut::workload {
 
 std::vector<Knot> parameter_step_knots(const CurveSource& curve, double step) {

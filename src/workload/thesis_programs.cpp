@@ -7,7 +7,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-// Method letters in the experiment's subprogram names (EKVI_POSTUPNE_45 is the A-spline one).
+// Method letters in program names. The experiment's subprograms are EKVI_POSTUPNE_45 (A),
+// EKVI_POSTUPNE_B_45 and EKVI_POSTUPNE_LIN_45; the C-spline one gets C.
 std::string method_tag(Method m) {
   switch (m) {
     case Method::Linear: return "LIN";
@@ -48,7 +49,7 @@ std::vector<ThesisProgram> thesis_programs() {
         spec.mode = mode;
         const std::string tag = method_tag(method);
         const std::string kind = mode == MillingMode::Progressive3D ? "POSTUPNE" : "2D";
-        spec.sub_name = family + "_" + kind + "_" + tag + "_" + number;
+        spec.sub_name = family + "_" + kind + (method == Method::ASpline ? "" : "_" + tag) + "_" + number;
         spec.main_name = family + "_" + tag + "_" + number + (mode == MillingMode::Loop2D ? "_2D" : "");
         spec.feed_mm_min = mode == MillingMode::Progressive3D ? 1530 : 1270;
         spec.overlap_knots = set.overlap_2d;
