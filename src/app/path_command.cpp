@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
+#include "report/element_listing.hpp"
 #include "report/path_csv_writer.hpp"
 
 namespace drycut::app {
@@ -14,6 +15,7 @@ struct PathOptions {
   ProgramOptions program;
   std::string csv;
   double step_mm = 0.01;
+  bool elements = false;
 };
 }  // namespace
 
@@ -25,6 +27,8 @@ void register_path(CLI::App& app) {
   cmd->add_option("--step", options->step_mm, "Sample spacing along the path in mm")
       ->default_val(0.01)
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--elements", options->elements,
+                "List the element stream (what the interpreter hands the planner) instead of samples");
   cmd->callback([options] {
     try {
       const machine::MachineProfile profile = load_machine(options->program);
@@ -35,8 +39,10 @@ void register_path(CLI::App& app) {
         if (!file) throw UsageError("cannot write " + options->csv);
         out = file.get();
       }
-      report::PathCsvWriter writer(out, options->step_mm);
-      PipelineOutcome outcome = run_program(options->program, profile, writer);
+      std::unique_ptr<interp::ElementSink> writer;
+      if (options->elements) writer = std::make_unique<report::ElementListingWriter>(out);
+      else writer = std::make_unique<report::PathCsvWriter>(out, options->step_mm);
+      PipelineOutcome outcome = run_program(options->program, profile, *writer);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut path: %s\n", e.what());

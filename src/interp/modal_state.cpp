@@ -52,6 +52,13 @@ constexpr std::array<std::pair<std::string_view, Setter>, 41> kCodes{{
     {"CDOF", [](ModalState& s) { s.collision_detection = false; }},
 }};
 
+// Modal codes of the reset list that shape nothing drycut plans (feed reference of tool radius
+// compensation, feed-forward, compressor off, FIFO control, exact-stop windows ...): accepted so a
+// machine's real MD20150 list can be used as it is.
+constexpr std::array<std::string_view, 14> kNoPathEffect{
+    "CFC", "CFTCP", "CFIN", "FNORM", "FFWOF", "COMPOF", "STARTFIFO", "G601", "G602", "G603",
+    "CUT2D", "DYNNORM", "SPATH", "G290"};
+
 }  // namespace
 
 bool ModalState::apply_code(std::string_view name) {
@@ -61,6 +68,8 @@ bool ModalState::apply_code(std::string_view name) {
       return true;
     }
   }
+  for (std::string_view code : kNoPathEffect)
+    if (code == name) return true;
   return false;
 }
 

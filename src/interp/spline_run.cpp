@@ -16,11 +16,17 @@ void SplineRun::begin(MotionMode mode, const geometry::Vec3& start,
   first_waiting_ = 1;
   next_index_ = 0;
   has_last_tangent_ = false;
-  builder_->add_point(start, 1.0, 0.0);
-  next_index_ = 1;
+  start_ = start;
 }
 
 void SplineRun::add(const geometry::Vec3& point, double weight, double knot_span, PathElement element) {
+  if (next_index_ == 0) {
+    // The start point is the current position, a control point nobody gave a weight: it takes
+    // the first block's PW, so that equal weights on every block give the plain B-spline (the
+    // experiment's PW=3 on every knot changes nothing) [inference, facts §1.5].
+    builder_->add_point(start_, weight, 0.0);
+    next_index_ = 1;
+  }
   waiting_.push_back(std::move(element));
   builder_->add_point(point, weight, knot_span);
   ++next_index_;

@@ -39,6 +39,7 @@ class SplineRun {
   std::deque<PathElement> waiting_;  // element templates of blocks first_waiting_.. in order
   size_t first_waiting_ = 1;         // block index of waiting_.front() (point 0 is the start)
   size_t next_index_ = 0;
+  geometry::Vec3 start_ = geometry::Vec3::Zero();
   bool has_last_tangent_ = false;
   geometry::Vec3 last_tangent_ = geometry::Vec3::UnitX();
 };

@@ -2,6 +2,7 @@
 // A path curve evaluated by arc length: F is a path velocity, so nothing downstream of the
 // interpreter ever sees a spline parameter. Units: millimetres.
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products in every curve
 #include <memory>
 
 namespace drycut::geometry {

@@ -1,0 +1,371 @@
+#include "interp/cutter_compensation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "interp/cutter_compensation_corner.hpp"
+#include "interp/cutter_compensation_crossing.hpp"
+#include "interp/geometry/arc_curve.hpp"
+#include "interp/geometry/line_curve.hpp"
+
+namespace drycut::interp {
+
+using geometry::CurvePtr;
+using geometry::Vec3;
+
+namespace {
+
+// Offset points of a joint closer than this are one point (tangential joint): no corner element.
+constexpr double kJoinTolerance = 1e-6;  // mm
+// A motion whose in-plane path is shorter than this has no direction in the plane.
+constexpr double kZeroInPlaneLength = 1e-6;  // mm
+// Output curves shorter than this are dropped (a piece trimmed to its joint).
+constexpr double kNegligibleLength = 1e-9;  // mm
+// Samples for the in-plane length of curved elements.
+constexpr int kLengthSamples = 32;
+// Bound on the cut/split passes for one new element (each removes a loop or a stretch).
+constexpr int kMaxCrossingPasses = 1000;
+
+[[noreturn]] void raise(int number, const std::string& detail, const BlockRef& block) {
+  throw AlarmError(make_alarm(number, detail, SourceLocation{block.file_name(), block.line, 0}, block.text));
+}
+
+double signed_offset(const CompensationRequest& request) {
+  switch (request.side) {
+    case CompensationSide::Left: return request.radius_mm;
+    case CompensationSide::Right: return -request.radius_mm;
+    case CompensationSide::None: break;
+  }
+  return 0.0;
+}
+
+double in_plane_length(const geometry::Curve& curve, const CompensationPlane& plane) {
+  if (curve.max_curvature() == 0.0) return plane.project(curve.end() - curve.start()).norm();
+  double sum = 0.0;
+  Eigen::Vector2d previous = plane.project(curve.start());
+  for (int i = 1; i <= kLengthSamples; ++i) {
+    const Eigen::Vector2d p = plane.project(curve.at(curve.length() * i / kLengthSamples).position);
+    sum += (p - previous).norm();
+    previous = p;
+  }
+  return sum;
+}
+
+bool counts_as_dummy(const PathElement& element) {
+  switch (element.kind) {
+    case ElementKind::Dwell:
+    case ElementKind::Stop:
+    case ElementKind::ToolChange:
+    case ElementKind::DynamicsChange: return true;
+    default: return element.is_motion();  // only motions without in-plane length get here
+  }
+}
+
+ElementKind kind_of(const CurvePtr& curve, ElementKind fallback) {
+  if (dynamic_cast<const geometry::LineCurve*>(curve.get()) != nullptr) return ElementKind::Line;
+  if (dynamic_cast<const geometry::ArcCurve*>(curve.get()) != nullptr) return ElementKind::Arc;
+  return fallback;
+}
+
+// The start direction of an element in the plane (its first in-plane tangent).
+Vec3 start_direction(const geometry::Curve& curve, const CompensationPlane& plane) {
+  Vec3 t = plane_direction(curve.at(0.0).tangent, plane);
+  if (t.isZero()) t = plane_direction(curve.end() - curve.start(), plane);
+  return t;
+}
+
+Vec3 end_direction(const geometry::Curve& curve, const CompensationPlane& plane) {
+  Vec3 t = plane_direction(curve.at(curve.length()).tangent, plane);
+  if (t.isZero()) t = plane_direction(curve.end() - curve.start(), plane);
+  return t;
+}
+
+}  // namespace
+
+CutterCompensation::CutterCompensation(ElementSink& downstream, const machine::MachineProfile& profile,
+                                       Diagnostics& diagnostics)
+    : downstream_(downstream), profile_(profile), diagnostics_(diagnostics) {}
+
+void CutterCompensation::consume(PathElement element) {
+  if (phase_ == Phase::Inactive) {
+    if (element.is_motion() && element.compensation.side != CompensationSide::None) {
+      select(std::move(element));
+      return;
+    }
+    if (element.is_motion() && element.curve) tool_position_ = element.curve->end();
+    downstream_.consume(std::move(element));
+    return;
+  }
+  if (element.is_motion() && element.compensation.side == CompensationSide::None) {
+    deselect(std::move(element));
+    return;
+  }
+  if (element.is_motion() && element.compensation.plane_normal_axis != plane_axis_)
+    raise(10757, "plane changed while G41/G42 is active", element.source);
+  if (!element.is_motion() || !element.curve || in_plane_length(*element.curve, plane_) < kZeroInPlaneLength) {
+    count_dummy(element);
+    window_.push_back(Item{std::move(element), std::nullopt, block_serial_, true});
+    return;
+  }
+  dummy_count_ = 0;
+  if (phase_ == Phase::Approaching) complete_approach(element);
+  add_motion(element);
+  const int check_blocks = element.compensation.collision_detection ? std::max(1, profile_.cutcom_maxnum_check_blocks) : 1;
+  release_old_blocks(check_blocks);
+}
+
+void CutterCompensation::finish() {
+  if (phase_ == Phase::Approaching) {
+    // Selected but never followed by a motion in the plane: the approach stays as programmed.
+    emit(approach_, approach_.curve, true);
+    flush_window();
+  } else if (phase_ == Phase::Active) {
+    flush_window();
+  }
+  phase_ = Phase::Inactive;
+  downstream_.finish();
+}
+
+void CutterCompensation::count_dummy(const PathElement& element) {
+  if (!counts_as_dummy(element)) return;
+  if (++dummy_count_ > profile_.cutcom_maxnum_dummy_blocks)
+    raise(10762,
+          "more than " + std::to_string(profile_.cutcom_maxnum_dummy_blocks) +
+              " blocks without motion in the compensation plane (MD20250)",
+          element.source);
+}
+
+void CutterCompensation::select(PathElement approach) {
+  plane_axis_ = approach.compensation.plane_normal_axis;
+  plane_ = CompensationPlane::from_normal_axis(plane_axis_);
+  if (approach.compensation.radius_mm < 0.0)
+    raise(10751, "negative tool radius", approach.source);
+  approach_ = std::move(approach);
+  phase_ = Phase::Approaching;
+  dummy_count_ = 0;
+}
+
+void CutterCompensation::complete_approach(const PathElement& first) {
+  const double d = signed_offset(first.compensation);
+  const Vec3 from = approach_.curve->start(), corner = approach_.curve->end();
+  const Vec3 t_first = start_direction(*first.curve, plane_);
+  const Vec3 target = corner + d * plane_.normal.cross(t_first);
+  const Vec3 t_approach = plane_direction(corner - from, plane_);
+  const bool around = approach_.compensation.contour_approach && !t_approach.isZero() &&
+                      is_outside_corner(t_approach, t_first, d, plane_);
+  if (around) {
+    // KONT from behind the contour: perpendicular to the approach, then around the start point.
+    const Vec3 beside = corner + d * plane_.normal.cross(t_approach);
+    emit(approach_, std::make_shared<geometry::LineCurve>(from, beside), false);
+    const auto curves = outside_corner_curves(corner, t_approach, t_first, d,
+                                              approach_.compensation.intersection_corners, plane_);
+    for (size_t i = 0; i < curves.size(); ++i) emit(approach_, curves[i], i + 1 == curves.size());
+  } else {
+    emit(approach_, std::make_shared<geometry::LineCurve>(from, target), true);
+  }
+  flush_window();  // elements programmed between the approach and the first contour element
+  phase_ = Phase::Active;
+}
+
+void CutterCompensation::deselect(PathElement retract) {
+  if (phase_ == Phase::Approaching) {
+    // G40 right after the selection cancels it: both moves run as programmed.
+    emit(approach_, approach_.curve, true);
+    flush_window();
+    phase_ = Phase::Inactive;
+    consume(std::move(retract));
+    return;
+  }
+  flush_window();
+  phase_ = Phase::Inactive;
+  dummy_count_ = 0;
+  if (!retract.curve) return;
+  const Vec3 corner = retract.curve->start(), goal = retract.curve->end();
+  const Vec3 t_retract = plane_direction(goal - corner, plane_);
+  if (retract.compensation.contour_approach && !t_retract.isZero() && last_offset_ != 0.0 &&
+      is_outside_corner(last_direction_, t_retract, last_offset_, plane_)) {
+    // KONT: around the end point until perpendicular to the retract direction.
+    const auto curves = outside_corner_curves(corner, last_direction_, t_retract, last_offset_,
+                                              retract.compensation.intersection_corners, plane_);
+    for (const auto& curve : curves) emit(retract, curve, false);
+  }
+  if (retract.kind == ElementKind::Line) {
+    emit(retract, std::make_shared<geometry::LineCurve>(tool_position_, goal), true);
+  } else {
+    emit(retract, retract.curve, true);  // a connecting line is inserted in front of it
+  }
+}
+
+std::optional<size_t> CutterCompensation::last_piece_index() const {
+  for (size_t i = window_.size(); i-- > 0;)
+    if (window_[i].piece) return i;
+  return std::nullopt;
+}
+
+void CutterCompensation::add_motion(const PathElement& element) {
+  ++block_serial_;
+  const double d = signed_offset(element.compensation);
+  OffsetPiece piece(element.curve, d, plane_);
+  const size_t first_new = window_.size();
+  bool joined = true;
+  if (const auto previous = last_piece_index()) {
+    const OffsetPiece& before = *window_[*previous].piece;
+    const Vec3 from = before.end(), to = piece.start();
+    auto push_corner = [&](const CurvePtr& curve) {
+      PathElement corner = element;
+      corner.kind = kind_of(curve, ElementKind::Line);
+      window_.push_back(Item{std::move(corner), OffsetPiece(curve, 0.0, plane_), block_serial_, true});
+    };
+    if (plane_.project(to - from).norm() >= kJoinTolerance) {
+      const Vec3 t_in = end_direction(before.base(), plane_), t_out = start_direction(*element.curve, plane_);
+      if (before.offset() != d) {
+        push_corner(std::make_shared<geometry::LineCurve>(from, to));  // radius or side changed
+      } else if (is_outside_corner(t_in, t_out, d, plane_)) {
+        for (const auto& curve : outside_corner_curves(element.curve->start(), t_in, t_out, d,
+                                                       element.compensation.intersection_corners, plane_))
+          push_corner(curve);
+      } else {
+        joined = false;  // inside corner: the crossing search must find the intersection
+      }
+    }
+  }
+  window_.push_back(Item{element, std::move(piece), block_serial_, joined});
+  const int check_blocks = element.compensation.collision_detection ? std::max(1, profile_.cutcom_maxnum_check_blocks) : 1;
+  resolve_crossings(first_new, check_blocks);
+}
+
+void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
+  const int oldest_block = block_serial_ - check_blocks;
+  size_t index = first_new;
+  for (int pass = 0; pass < kMaxCrossingPasses && index < window_.size(); ++pass) {
+    if (!window_[index].piece) {
+      ++index;
+      continue;
+    }
+    // Crossings with earlier pieces, oldest first: the earliest cuts out the largest stretch.
+    std::optional<size_t> previous_piece;
+    for (size_t k = index; k-- > 0;)
+      if (window_[k].piece) {
+        previous_piece = k;
+        break;
+      }
+    bool cut = false;
+    for (size_t k = 0; k < index && !cut; ++k) {
+      if (!window_[k].piece || window_[k].block < oldest_block) continue;
+      const auto crossing = find_crossing(*window_[k].piece, *window_[index].piece, previous_piece == k, plane_);
+      if (!crossing) continue;
+      const size_t removed_before =
+          static_cast<size_t>(std::count_if(window_.begin() + static_cast<long>(k) + 1, window_.begin() + static_cast<long>(index),
+                                            [](const Item& it) { return it.piece.has_value(); }));
+      cut_between(k, index, crossing->u_earlier, crossing->u_later);
+      index -= removed_before;
+      cut = true;
+    }
+    if (cut) continue;  // search again from the new start of the piece
+    if (const auto loop = find_self_crossing(*window_[index].piece, plane_)) {
+      Item second = window_[index];
+      window_[index].piece->trim(window_[index].piece->u_begin(), loop->u_earlier);
+      second.piece->trim(loop->u_later, second.piece->u_end());
+      second.joined = true;
+      window_.insert(window_.begin() + static_cast<long>(index) + 1, std::move(second));
+      ++index;
+      continue;
+    }
+    ++index;
+  }
+}
+
+void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earlier, double u_later) {
+  OffsetPiece& first = *window_[earlier].piece;
+  first.trim(first.u_begin(), u_earlier);
+  OffsetPiece& second = *window_[later].piece;
+  second.trim(u_later, second.u_end());
+  window_[later].joined = true;
+  const int keep_a = window_[earlier].block, keep_b = window_[later].block;
+  std::vector<int> warned;
+  std::deque<Item> kept;
+  for (size_t i = 0; i < window_.size(); ++i) {
+    Item& item = window_[i];
+    const bool between = i > earlier && i < later;
+    if (between && item.piece) {
+      // Passengers stay (they run at the crossing point); motion pieces are cut out.
+      if (item.block != keep_a && item.block != keep_b &&
+          std::find(warned.begin(), warned.end(), item.block) == warned.end()) {
+        warned.push_back(item.block);
+        diagnostics_.warn(10763, "block skipped by bottleneck detection",
+                          SourceLocation{item.element.source.file_name(), item.element.source.line, 0},
+                          item.element.source.text);
+      }
+      continue;
+    }
+    kept.push_back(std::move(item));
+  }
+  window_ = std::move(kept);
+}
+
+void CutterCompensation::release_old_blocks(int check_blocks) {
+  // The next block searches the blocks from block_serial_ + 1 - check_blocks on.
+  while (!window_.empty() && window_.front().block <= block_serial_ - check_blocks) emit_front();
+}
+
+void CutterCompensation::flush_window() {
+  while (!window_.empty()) emit_front();
+}
+
+void CutterCompensation::emit_front() {
+  Item item = std::move(window_.front());
+  window_.pop_front();
+  if (!item.piece) {
+    emit_passenger(std::move(item.element));
+    return;
+  }
+  if (!item.joined)
+    raise(10751, "no intersection of the offset paths within the checked blocks (MD20240)", item.element.source);
+  if (item.piece->runs_backwards())
+    raise(10751, "radius of curvature smaller than the tool radius on the compensation side", item.element.source);
+  bool last_of_block = true;
+  for (const Item& later : window_)
+    if (later.piece && later.block == item.block) last_of_block = false;
+  if (item.piece->offset() != 0.0) {
+    last_direction_ = end_direction(item.piece->base(), plane_);
+    last_offset_ = item.piece->offset();
+  }
+  emit(std::move(item.element), item.piece->build_curve(), last_of_block);
+}
+
+void CutterCompensation::emit_passenger(PathElement element) {
+  if (element.is_motion() && element.curve) {
+    // No in-plane motion: only the normal-axis travel, at the current tool-centre point.
+    const Vec3 travel = element.curve->end() - element.curve->start();
+    emit(std::move(element), std::make_shared<geometry::LineCurve>(tool_position_, tool_position_ + travel), true);
+    return;
+  }
+  downstream_.consume(std::move(element));
+}
+
+void CutterCompensation::emit(PathElement element, CurvePtr curve, bool last_of_block) {
+  auto not_final = [](PathElement& e) {
+    e.dynamics.exact_stop_this_block = false;
+    if (e.dynamics.transition == TransitionMode::ExactStop) e.dynamics.transition = TransitionMode::Continuous;
+  };
+  if ((curve->start() - tool_position_).norm() > kJoinTolerance) {
+    // Cut-out stretches and normal-axis moves can leave a step: join it by a straight move.
+    PathElement connector = element;
+    connector.kind = ElementKind::Line;
+    connector.curve = std::make_shared<geometry::LineCurve>(tool_position_, curve->start());
+    not_final(connector);
+    downstream_.consume(std::move(connector));
+    tool_position_ = curve->start();
+  }
+  if (curve->length() < kNegligibleLength && !last_of_block) return;
+  element.kind = kind_of(curve, element.kind);
+  element.curve = curve;
+  if (!last_of_block) not_final(element);
+  tool_position_ = curve->end();
+  downstream_.consume(std::move(element));
+}
+
+}  // namespace drycut::interp

@@ -1,0 +1,99 @@
+#pragma once
+// Tool radius compensation G41/G42/G40 as a stage of the element stream: it turns the PROGRAMMED
+// elements into TOOL-CENTRE elements (SINUMERIK group 7, with G450/G451, NORM/KONT, CDON/CDOF).
+//
+// What is modelled (see ../shared/reference/sinumerik-facts.md section 3):
+// - Selection: the first motion with side != None is the approach, always a straight move.
+//   NORM: it ends perpendicular to the start direction of the next element in the plane
+//   (tool centre = next start + r * normal on the compensation side). KONT: if the approach
+//   meets the contour at an outside corner (start point "behind" the contour) the tool ends the
+//   approach perpendicular to the approach direction and travels around the start point by the
+//   G450/G451 rule; otherwise as NORM. The approach keeps its own block.
+// - Deselection: the first motion with side == None (G40) starts perpendicular at the end of the
+//   last compensated element (NORM) and goes straight to its programmed end point; KONT goes
+//   around the end point first when that is an outside corner.
+// - Outside corners: G450 circle of the tool radius around the corner (DISC is not modelled:
+//   always the plain circle), G451 the intersection of the offset lines unless the direction
+//   change exceeds 100 degrees (then the circle). Corner elements belong to the NEXT block.
+//   Inside corners: the offset paths are intersected and both trimmed. A joint whose offset
+//   points are closer than 1e-6 mm is tangential and gets no corner element.
+// - Offsets of lines and arcs in the plane are exact LineCurves / ArcCurves; anything else is a
+//   geometry::OffsetCurve. Only the in-plane part is offset; motion along the normal stays.
+// - Bottleneck detection: each new element's offset is searched for crossings with the offsets
+//   of the preceding MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS blocks (CDON) or only the previous block
+//   (CDOF), oldest first, and with itself (loops). At a crossing the path between is cut out;
+//   every block cut out completely gets warning 10763 (once). Alarm 10751 (collision danger):
+//   an inside joint for which no crossing turns up within the checked blocks, or an offset left
+//   in the path that runs backwards or vanishes (an arc or bend tighter than the tool radius on
+//   the compensation side; 10751 is the number the facts give for this danger).
+// - Feed: the tool-centre path gets the programmed F unchanged (F is the tool-centre velocity,
+//   not CFC's contour velocity). Every output element keeps the source block, feed, dynamics and
+//   label of the block it comes from; a block split into several elements stops (G9/G60) only
+//   after its last one.
+// - Non-motion elements and motions without in-plane length (e.g. a Z infeed) keep their order
+//   and run at the current tool-centre point; more than MD20250 CUTCOM_MAXNUM_DUMMY_BLOCKS of
+//   them in a row (Dwell, Stop, ToolChange, DynamicsChange, zero in-plane motion): alarm 10762.
+//   A plane other than the selection plane while active: alarm 10757.
+// - Radius or side changed while active: the two offsets are joined by a straight move.
+// Memory: the window holds the elements of the last CUTCOM_MAXNUM_CHECK_BLOCKS blocks.
+#include <deque>
+#include <optional>
+
+#include "interp/cutter_compensation_piece.hpp"
+#include "interp/path_element.hpp"
+#include "machine/alarm.hpp"
+#include "machine/machine_profile.hpp"
+
+namespace drycut::interp {
+
+class CutterCompensation : public ElementSink {
+ public:
+  CutterCompensation(ElementSink& downstream, const machine::MachineProfile& profile, Diagnostics& diagnostics);
+
+  void consume(PathElement element) override;
+  void finish() override;
+
+ private:
+  enum class Phase { Inactive, Approaching, Active };
+
+  // An element waiting in the window: a tool-centre piece, or a passenger (non-motion element or
+  // motion without in-plane length) that runs at the current tool-centre point.
+  struct Item {
+    PathElement element;
+    std::optional<OffsetPiece> piece;
+    int block = 0;        // serial number of the programmed motion block
+    bool joined = true;   // false: inside joint before this piece still without a crossing
+  };
+
+  void select(PathElement approach);
+  void complete_approach(const PathElement& first);
+  void deselect(PathElement retract);
+  void add_motion(const PathElement& element);
+  void resolve_crossings(size_t first_new, int check_blocks);
+  void cut_between(size_t earlier, size_t later, double u_earlier, double u_later);
+  void release_old_blocks(int check_blocks);
+  void flush_window();
+  void emit_front();
+  void emit(PathElement element, geometry::CurvePtr curve, bool last_of_block);
+  void emit_passenger(PathElement element);
+  void count_dummy(const PathElement& element);
+  std::optional<size_t> last_piece_index() const;
+
+  ElementSink& downstream_;
+  const machine::MachineProfile& profile_;
+  Diagnostics& diagnostics_;
+
+  Phase phase_ = Phase::Inactive;
+  CompensationPlane plane_;
+  int plane_axis_ = 2;
+  PathElement approach_;
+  std::deque<Item> window_;
+  int block_serial_ = 0;
+  int dummy_count_ = 0;
+  geometry::Vec3 tool_position_ = geometry::Vec3::Zero();
+  // The last compensated element released: its programmed end direction and offset (retract).
+  geometry::Vec3 last_direction_ = geometry::Vec3::UnitX();
+  double last_offset_ = 0.0;
+};
+
+}  // namespace drycut::interp

@@ -1,0 +1,44 @@
+#pragma once
+// Circular arc or helix: a circle of `radius` around `centre` in the plane spanned by (e1, e2),
+// swept by `sweep` radians (positive = counter-clockwise about e1 x e2) from `start_angle`,
+// while moving `axial_travel` mm linearly along the normal e1 x e2.
+//   P(phi) = centre + radius (cos phi e1 + sin phi e2) + axial_travel (phi - start_angle) / sweep * n
+// Exact closed forms: length = sqrt((radius sweep)^2 + axial_travel^2), curvature = r / (r^2 + c^2)
+// with c = axial_travel / sweep (mm per radian).
+#include "interp/geometry/curve.hpp"
+#include "interp/geometry/plane.hpp"
+
+namespace drycut::geometry {
+
+class ArcCurve final : public Curve {
+ public:
+  // Arc in a working plane (G2/G3, CT).
+  ArcCurve(Vec3 centre, double radius, Plane plane, double start_angle, double sweep, double axial_travel);
+  // Arc in an arbitrary plane (CIP); e1 and e2 must be orthonormal.
+  ArcCurve(Vec3 centre, double radius, Vec3 e1, Vec3 e2, double start_angle, double sweep, double axial_travel);
+
+  double length() const override { return length_; }
+  CurvePoint at(double s) const override;
+  double max_curvature() const override { return curvature_; }
+
+  const Vec3& centre() const { return centre_; }
+  double radius() const { return radius_; }
+  double start_angle() const { return start_angle_; }
+  double sweep() const { return sweep_; }
+  double axial_travel() const { return axial_travel_; }
+  Vec3 normal() const { return normal_; }
+
+ private:
+  Vec3 centre_;
+  double radius_;
+  Vec3 e1_, e2_, normal_;
+  double start_angle_;
+  double sweep_;
+  double axial_travel_;
+  double pitch_;          // axial mm per radian of sweep
+  double speed_;          // |dP/dphi| = sqrt(r^2 + pitch^2)
+  double length_;
+  double curvature_;
+};
+
+}  // namespace drycut::geometry

@@ -1,0 +1,80 @@
+#include "interp/geometry/arc_length_table.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace drycut::geometry {
+namespace {
+
+// Gauss-Legendre 5-point nodes and weights on [-1, 1].
+constexpr std::array<double, 5> kNodes{-0.9061798459386640, -0.5384693101056831, 0.0,
+                                       0.5384693101056831, 0.9061798459386640};
+constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                         0.4786286704993665, 0.2369268850561891};
+constexpr int kInitialIntervals = 4;
+constexpr int kMaxDepth = 30;
+
+}  // namespace
+
+double ArcLengthTable::gauss5(const Speed& speed, double a, double b) {
+  const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+  double sum = 0.0;
+  for (size_t i = 0; i < kNodes.size(); ++i) sum += kWeights[i] * speed(mid + half * kNodes[i]);
+  return sum * half;
+}
+
+ArcLengthTable::ArcLengthTable(const Speed& speed, double u_begin, double u_end) {
+  u_.push_back(u_begin);
+  s_.push_back(0.0);
+  if (!(u_end > u_begin)) return;
+  const double step = (u_end - u_begin) / kInitialIntervals;
+  double estimate = 0.0;
+  for (int i = 0; i < kInitialIntervals; ++i) estimate += gauss5(speed, u_begin + i * step, u_begin + (i + 1) * step);
+  const double tol = 1e-11 * std::max(estimate, 1e-300);
+
+  // Depth-first over intervals, left to right, so accepted ends come out in order.
+  struct Interval { double a, b, whole; int depth; };
+  std::vector<Interval> stack;
+  for (int i = kInitialIntervals - 1; i >= 0; --i) {
+    const double a = u_begin + i * step;
+    const double b = i + 1 == kInitialIntervals ? u_end : a + step;
+    stack.push_back({a, b, gauss5(speed, a, b), 0});
+  }
+  while (!stack.empty()) {
+    const Interval iv = stack.back();
+    stack.pop_back();
+    const double m = 0.5 * (iv.a + iv.b);
+    const double left = gauss5(speed, iv.a, m), right = gauss5(speed, m, iv.b);
+    if (std::abs(left + right - iv.whole) <= tol || iv.depth >= kMaxDepth) {
+      u_.push_back(iv.b);
+      s_.push_back(s_.back() + left + right);
+    } else {
+      stack.push_back({m, iv.b, right, iv.depth + 1});
+      stack.push_back({iv.a, m, left, iv.depth + 1});
+    }
+  }
+}
+
+double ArcLengthTable::parameter_at(const Speed& speed, double s) const {
+  if (u_.size() < 2 || s <= 0.0) return u_.empty() ? 0.0 : u_.front();
+  if (s >= s_.back()) return u_.back();
+  const size_t k = static_cast<size_t>(std::upper_bound(s_.begin(), s_.end(), s) - s_.begin()) - 1;
+  double lo = u_[k], hi = u_[k + 1];
+  const double s0 = s_[k], ds = s_[k + 1] - s_[k];
+  double u = ds > 0.0 ? lo + (hi - lo) * (s - s0) / ds : lo;
+  const double tol = 1e-13 * std::max(1.0, s_.back());
+  for (int it = 0; it < 60; ++it) {
+    const double f = s0 + gauss5(speed, u_[k], u) - s;
+    if (std::abs(f) <= tol) break;
+    if (f > 0.0) hi = u; else lo = u;
+    const double v = speed(u);
+    double next = v > 0.0 ? u - f / v : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (hi - lo < 1e-15 * std::max(1.0, std::abs(u))) break;
+    u = next;
+  }
+  return u;
+}
+
+}  // namespace drycut::geometry

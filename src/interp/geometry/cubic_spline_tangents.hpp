@@ -1,0 +1,25 @@
+#pragma once
+// Tangents dP/du at the points of an interpolating C2 cubic spline (one cubic per interval,
+// parameter steps given), from the classical tridiagonal system
+//   h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i d_{i-1} + h_{i-1} d_i),
+// d_i = (p_{i+1} - p_i) / h_i, closed by one end condition per side.
+#include <span>
+#include <vector>
+
+#include "interp/geometry/curve.hpp"
+
+namespace drycut::geometry {
+
+struct TangentCondition {
+  enum class Kind { Natural, Clamped, NotAKnot };
+  Kind kind = Kind::Natural;
+  Vec3 tangent = Vec3::Zero();  // dP/du for Clamped
+};
+
+// points.size() == steps.size() + 1 >= 2, every step > 0. Not-a-knot needs three points; with
+// two it falls back to Natural, and with exactly three and not-a-knot at both ends the result is
+// the parabola through them.
+std::vector<Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<const double> steps,
+                                        const TangentCondition& begin, const TangentCondition& end);
+
+}  // namespace drycut::geometry

@@ -1,0 +1,84 @@
+#include "interp/geometry/polynomial_span.hpp"
+
+#include <algorithm>
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace drycut::geometry {
+namespace {
+// Curvature is sampled at this many equal parameter steps for max_curvature().
+constexpr int kCurvatureSamples = 32;
+}  // namespace
+
+PolynomialSpan::PolynomialSpan(const Eigen::Matrix4d& coefficients, double u_end)
+    : c_(coefficients), u_end_(u_end) {
+  const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
+  table_ = ArcLengthTable(sp, 0.0, u_end_);
+  for (int i = 0; i <= kCurvatureSamples; ++i) {
+    const ParametricDerivatives d = derivatives(u_end_ * i / kCurvatureSamples);
+    const double v = d.d1.norm();
+    if (v > 0.0) max_curvature_ = std::max(max_curvature_, d.d1.cross(d.d2).norm() / (v * v * v));
+  }
+}
+
+PolynomialSpan PolynomialSpan::hermite(const Vec3& p0, const Vec3& p1, const Vec3& m0, const Vec3& m1,
+                                       double h) {
+  Eigen::Matrix4d c = Eigen::Matrix4d::Zero();
+  const Vec3 delta = (p1 - p0) / h;
+  c.block<3, 1>(0, 0) = p0;
+  c.block<3, 1>(0, 1) = m0;
+  c.block<3, 1>(0, 2) = (3.0 * delta - 2.0 * m0 - m1) / h;
+  c.block<3, 1>(0, 3) = (m0 + m1 - 2.0 * delta) / (h * h);
+  c(3, 0) = 1.0;
+  return PolynomialSpan(c, h);
+}
+
+ParametricDerivatives PolynomialSpan::derivatives(double u) const {
+  const Eigen::Vector4d h0 = c_.col(0) + u * (c_.col(1) + u * (c_.col(2) + u * c_.col(3)));
+  const Eigen::Vector4d h1 = c_.col(1) + u * (2.0 * c_.col(2) + 3.0 * u * c_.col(3));
+  const Eigen::Vector4d h2 = 2.0 * c_.col(2) + 6.0 * u * c_.col(3);
+  const Eigen::Vector4d h3 = 6.0 * c_.col(3);
+  ParametricDerivatives d;
+  const double w = h0(3), w1 = h1(3), w2 = h2(3), w3 = h3(3);
+  // Leibniz on A = w P: A' = w'P + wP', A'' = w''P + 2w'P' + wP'', A''' = ...
+  d.p = h0.head<3>() / w;
+  d.d1 = (h1.head<3>() - w1 * d.p) / w;
+  d.d2 = (h2.head<3>() - 2.0 * w1 * d.d1 - w2 * d.p) / w;
+  d.d3 = (h3.head<3>() - 3.0 * w1 * d.d2 - 3.0 * w2 * d.d1 - w3 * d.p) / w;
+  return d;
+}
+
+double PolynomialSpan::parameter_at(double s) const {
+  const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
+  return table_.parameter_at(sp, s);
+}
+
+CurvePoint PolynomialSpan::by_arc_length(const ParametricDerivatives& d) {
+  CurvePoint out;
+  out.position = d.p;
+  const double v = d.d1.norm();
+  if (!(v > 1e-300)) {
+    // Stationary parameter point: the direction of motion is that of the first non-zero derivative.
+    const Vec3 dir = d.d2.norm() > 0.0 ? d.d2 : d.d3;
+    out.tangent = dir.norm() > 0.0 ? Vec3(dir.normalized()) : Vec3(Vec3::UnitX());
+    return out;
+  }
+  // Chain rule with u' = du/ds = 1/v:  P_s = P' u',  P_ss = P'' u'^2 + P' u'',
+  // P_sss = P''' u'^3 + 3 P'' u' u'' + P' u''', where v' = dv/du = (P'.P'')/v.
+  const double v1 = d.d1.dot(d.d2) / v;
+  const double v2 = (d.d2.squaredNorm() + d.d1.dot(d.d3)) / v - v1 * v1 / v;
+  const double up = 1.0 / v;
+  const double upp = -v1 / (v * v * v);
+  const double uppp = (-v2 / (v * v * v) + 3.0 * v1 * v1 / (v * v * v * v)) / v;
+  out.tangent = d.d1 * up;
+  out.curvature_vector = d.d2 * (up * up) + d.d1 * upp;
+  out.curvature_rate = d.d3 * (up * up * up) + 3.0 * d.d2 * (up * upp) + d.d1 * uppp;
+  out.curvature = out.curvature_vector.norm();
+  out.curvature_derivative =
+      out.curvature > 0.0 ? out.curvature_vector.dot(out.curvature_rate) / out.curvature : 0.0;
+  return out;
+}
+
+CurvePoint PolynomialSpan::at(double s) const { return by_arc_length(derivatives(parameter_at(s))); }
+
+}  // namespace drycut::geometry

@@ -1,0 +1,47 @@
+#pragma once
+// One spline span: a (rational) cubic in homogeneous coordinates,
+//   H(u) = c0 + c1 u + c2 u^2 + c3 u^3,  H = (w x, w y, w z, w),  u in [0, u_end],
+// so P(u) = H.xyz / H.w. Polynomial splines (Akima, cubic) have w == 1; NURBS spans of degree
+// <= 3 are rational. Evaluated by arc length through an ArcLengthTable.
+#include <Eigen/Core>
+
+#include "interp/geometry/arc_length_table.hpp"
+#include "interp/geometry/curve.hpp"
+
+namespace drycut::geometry {
+
+// Position and derivatives with respect to the span parameter u.
+struct ParametricDerivatives {
+  Vec3 p, d1, d2, d3;
+};
+
+class PolynomialSpan final : public Curve {
+ public:
+  // Columns are the coefficients c0..c3 of the homogeneous polynomial (rows x, y, z, w).
+  PolynomialSpan(const Eigen::Matrix4d& coefficients, double u_end);
+
+  // Cubic Hermite span on u in [0, h]: P(0)=p0, P(h)=p1, P'(0)=m0, P'(h)=m1.
+  static PolynomialSpan hermite(const Vec3& p0, const Vec3& p1, const Vec3& m0, const Vec3& m1, double h);
+
+  double length() const override { return table_.length(); }
+  CurvePoint at(double s) const override;
+  Vec3 start() const override { return derivatives(0.0).p; }
+  Vec3 end() const override { return derivatives(u_end_).p; }
+  double max_curvature() const override { return max_curvature_; }
+
+  ParametricDerivatives derivatives(double u) const;
+  double parameter_end() const { return u_end_; }
+  double parameter_at(double s) const;
+  // Turns parametric derivatives into the arc-length quantities of a CurvePoint.
+  static CurvePoint by_arc_length(const ParametricDerivatives& d);
+
+ private:
+  double speed(double u) const { return derivatives(u).d1.norm(); }
+
+  Eigen::Matrix4d c_;
+  double u_end_;
+  ArcLengthTable table_;
+  double max_curvature_ = 0.0;
+};
+
+}  // namespace drycut::geometry

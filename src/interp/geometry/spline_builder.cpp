@@ -1,0 +1,7 @@
+#include "interp/geometry/spline_builder.hpp"
+
+namespace drycut::geometry {
+
+SplineBuilder::~SplineBuilder() = default;
+
+}  // namespace drycut::geometry

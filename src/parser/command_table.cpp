@@ -1,0 +1,141 @@
+#include "parser/command_table.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace drycut::parser {
+namespace {
+
+struct CommandEntry {
+  std::string_view name;
+  Support support;
+};
+
+constexpr Support M = Support::Modelled;
+constexpr Support N = Support::NotModelled;
+
+// Commands the interpreter gives meaning to, then valid ones it does not model (yet).
+constexpr std::array kCommands{
+    CommandEntry{"ASPLINE", M}, CommandEntry{"BSPLINE", M}, CommandEntry{"CSPLINE", M},
+    CommandEntry{"CIP", M},     CommandEntry{"CT", M},      CommandEntry{"BAUTO", M},
+    CommandEntry{"BNAT", M},    CommandEntry{"BTAN", M},    CommandEntry{"EAUTO", M},
+    CommandEntry{"ENAT", M},    CommandEntry{"ETAN", M},    CommandEntry{"SOFT", M},
+    CommandEntry{"BRISK", M},   CommandEntry{"NORM", M},    CommandEntry{"KONT", M},
+    CommandEntry{"CDON", M},    CommandEntry{"CDOF", M},    CommandEntry{"TRANS", M},
+    CommandEntry{"ATRANS", M},  CommandEntry{"SPLINEPATH", M}, CommandEntry{"CYCLE832", M},
+    CommandEntry{"MSG", M},     CommandEntry{"STOPRE", M},  CommandEntry{"RET", M},
+    CommandEntry{"POLY", M},
+    // Valid on the control, not modelled by drycut.
+    CommandEntry{"TRAORI", N},  CommandEntry{"TRAFOOF", N}, CommandEntry{"TRACYL", N},
+    CommandEntry{"TRANSMIT", N}, CommandEntry{"COMPON", N}, CommandEntry{"COMPCURV", N},
+    CommandEntry{"COMPCAD", N}, CommandEntry{"COMPOF", N},  CommandEntry{"FFWON", N},
+    CommandEntry{"FFWOF", N},   CommandEntry{"ROT", N},     CommandEntry{"AROT", N},
+    CommandEntry{"SCALE", N},   CommandEntry{"ASCALE", N},  CommandEntry{"MIRROR", N},
+    CommandEntry{"AMIRROR", N}, CommandEntry{"UPATH", N},   CommandEntry{"SPATH", N},
+    CommandEntry{"CFC", N},     CommandEntry{"CFTCP", N},   CommandEntry{"CFIN", N},
+    CommandEntry{"DRIVE", N},   CommandEntry{"DYNNORM", N}, CommandEntry{"DYNPOS", N},
+    CommandEntry{"DYNROUGH", N}, CommandEntry{"DYNSEMIFIN", N}, CommandEntry{"DYNFINISH", N},
+    CommandEntry{"ORIWKS", N},  CommandEntry{"ORIMKS", N},  CommandEntry{"ORIAXES", N},
+    CommandEntry{"ORIVECT", N}, CommandEntry{"CUT2D", N},   CommandEntry{"CUT3DC", N},
+    CommandEntry{"SUPA", N},    CommandEntry{"DIAMON", N},  CommandEntry{"DIAMOF", N},
+    CommandEntry{"SPOS", N},    CommandEntry{"SETMS", N},   CommandEntry{"WAITM", N},
+    CommandEntry{"FGROUP", N},  CommandEntry{"FNORM", N},   CommandEntry{"FLIN", N},
+    CommandEntry{"FCUB", N},    CommandEntry{"TCARR", N},   CommandEntry{"TCOABS", N},
+    CommandEntry{"TCOFR", N},   CommandEntry{"CPRECON", N}, CommandEntry{"CPRECOF", N},
+    CommandEntry{"SOFTA", N},   CommandEntry{"BRISKA", N},  
+    CommandEntry{"WORKPIECE", N}, CommandEntry{"POCKET3", N}, CommandEntry{"POCKET4", N},
+    CommandEntry{"SLOT1", N},   CommandEntry{"SLOT2", N},   CommandEntry{"LONGHOLE", N},
+    CommandEntry{"HOLES1", N},  CommandEntry{"HOLES2", N},  CommandEntry{"MCALL", N},
+    CommandEntry{"OFFN", N},    CommandEntry{"DISCL", N},   
+    CommandEntry{"EXTCALL", N}, CommandEntry{"PCALL", N},   
+};
+
+// Addresses with a value. Single letters plus the extended addresses of the 840D.
+constexpr std::array<std::string_view, 40> kAddresses{
+    "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
+    "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "TURN", "DISC", "OFFN", "S1",
+    "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS"};
+
+// Words of the language itself, for the misspelling check.
+constexpr std::array<std::string_view, 22> kKeywords{
+    "GOTOF", "GOTOB", "GOTOC", "GOTO", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR",
+    "ENDFOR", "REPEAT", "UNTIL", "LOOP", "ENDLOOP", "CALL", "DEF", "PROC", "RET", "SAVE",
+    "DISPLOF", "TO"};
+
+bool all_digits(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Levenshtein distance with an early cap; words here are short.
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::array<size_t, 64> prev{}, cur{};
+  if (a.size() >= prev.size() || b.size() >= prev.size()) return 99;
+  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0u : 1u)});
+    prev = cur;
+  }
+  return prev[b.size()];
+}
+
+}  // namespace
+
+Support command_support(std::string_view name) {
+  for (const auto& c : kCommands)
+    if (c.name == name) return c.support;
+  // Standard and manufacturer cycles CYCLE81, CYCLE800 ...: valid, not modelled.
+  if (name.size() > 5 && name.substr(0, 5) == "CYCLE" && all_digits(name.substr(5))) return N;
+  return Support::Unknown;
+}
+
+Support g_code_support(int64_t g) {
+  // Modelled: motion, planes, TRC, offsets, exact stop / continuous path, units, dimensions,
+  // feed types, polar poles, corner behaviour.
+  switch (g) {
+    case 0: case 1: case 2: case 3: case 4: case 9: case 17: case 18: case 19: case 40: case 41:
+    case 42: case 53: case 54: case 55: case 56: case 57: case 60: case 64: case 70: case 71:
+    case 90: case 91: case 94: case 95: case 110: case 111: case 112: case 153: case 450: case 451:
+    case 500: case 601: case 602: case 603: case 641: case 642: case 643: case 644: case 645:
+    case 700: case 710:
+      return M;
+    case 5: case 7: case 8: case 25: case 26: case 33: case 34: case 35: case 58: case 59:
+    case 63: case 74: case 75: case 93: case 96: case 97: case 140: case 141:
+    case 142: case 143: case 147: case 148: case 247: case 248: case 290: case 291: case 331:
+    case 332: case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 621:
+    case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
+    case 817: case 818: case 819: case 820: case 821: case 822: case 823: case 824: case 825:
+    case 826: case 827: case 828: case 829: case 931: case 942: case 952: case 961: case 962:
+    case 971: case 972: case 973:
+      return N;
+    default:
+      if (g >= 505 && g <= 599) return M;  // settable zero offsets
+      return Support::Unknown;
+  }
+}
+
+bool is_address(std::string_view name) {
+  return std::find(kAddresses.begin(), kAddresses.end(), name) != kAddresses.end();
+}
+
+std::string_view near_miss(std::string_view name) {
+  if (name.size() < 3) return {};
+  const size_t limit = name.size() >= 6 ? 2 : 1;
+  std::string_view best;
+  size_t best_distance = limit + 1;
+  auto consider = [&](std::string_view candidate) {
+    const size_t d = edit_distance(name, candidate);
+    if (d > 0 && d < best_distance) {
+      best = candidate;
+      best_distance = d;
+    }
+  };
+  for (const auto& c : kCommands) consider(c.name);
+  for (auto k : kKeywords) consider(k);
+  return best;
+}
+
+}  // namespace drycut::parser
