@@ -9,5 +9,6 @@ namespace drycut::app {
 void register_check(CLI::App& app);
 void register_path(CLI::App& app);
 void register_generate(CLI::App& app);
+void register_run(CLI::App& app);
 
 }  // namespace drycut::app

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
 
   drycut::app::register_check(app);
   drycut::app::register_path(app);
+  drycut::app::register_run(app);
   drycut::app::register_generate(app);
 
   try {

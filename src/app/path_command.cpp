@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
+#include "interp/cutter_compensation.hpp"
 #include "report/element_listing.hpp"
 #include "report/path_csv_writer.hpp"
 
@@ -16,6 +17,7 @@ struct PathOptions {
   std::string csv;
   double step_mm = 0.01;
   bool elements = false;
+  bool tool_centre = false;
 };
 }  // namespace
 
@@ -27,6 +29,8 @@ void register_path(CLI::App& app) {
   cmd->add_option("--step", options->step_mm, "Sample spacing along the path in mm")
       ->default_val(0.01)
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--tool-centre", options->tool_centre,
+                "The tool-centre path (after G41/G42 radius compensation) instead of the programmed one");
   cmd->add_flag("--elements", options->elements,
                 "List the element stream (what the interpreter hands the planner) instead of samples");
   cmd->callback([options] {
@@ -42,7 +46,15 @@ void register_path(CLI::App& app) {
       std::unique_ptr<interp::ElementSink> writer;
       if (options->elements) writer = std::make_unique<report::ElementListingWriter>(out);
       else writer = std::make_unique<report::PathCsvWriter>(out, options->step_mm);
-      PipelineOutcome outcome = run_program(options->program, profile, *writer);
+      PipelineOutcome outcome;
+      if (options->tool_centre) {
+        Diagnostics compensation_diagnostics;
+        interp::CutterCompensation compensation(*writer, profile, compensation_diagnostics);
+        outcome = run_program(options->program, profile, compensation);
+        for (const auto& a : compensation_diagnostics.items()) outcome.diagnostics.report(a);
+      } else {
+        outcome = run_program(options->program, profile, *writer);
+      }
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut path: %s\n", e.what());

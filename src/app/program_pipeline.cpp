@@ -50,10 +50,11 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
     outcome.alarm = true;
   }
   try {
+    // After an alarm this still hands the sinks what they hold, so nothing written is lost.
     interpreter.finish();
   } catch (const AlarmError& e) {
-    // Only the first alarm stops a real control; a second one while finishing is still told.
-    outcome.diagnostics.report(e.alarm());
+    // The control stops at the first alarm: one raised while finishing after it is a follow-up.
+    if (!outcome.alarm) outcome.diagnostics.report(e.alarm());
     outcome.alarm = true;
   }
   outcome.blocks = loader.blocks_executed();

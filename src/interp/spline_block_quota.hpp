@@ -21,14 +21,17 @@ class SplineBlockQuota {
   void stop() { required_ = 0; }
   bool active() const { return required_ > 0; }
 
-  // Records one executed block; returns false when the window that ends with it is complete and
-  // holds fewer spline end-point blocks than required.
+  // Records one executed block; returns false when a spline point arrives and the window of 10
+  // blocks that ends with it holds fewer spline end-point blocks than required. Windows that end
+  // in non-spline blocks are not judged: after the last point of a run (its M17, a G40 before
+  // the next G1) the buffer has nothing left to compute, and the experiment's programs, which end
+  // their runs that way, ran on the real control.
   bool record(bool is_spline_point) {
     if (!active()) return true;
     window_ <<= 1;
     window_[0] = is_spline_point;
     if (count_ < kWindow) ++count_;
-    if (count_ < kWindow) return true;
+    if (count_ < kWindow || !is_spline_point) return true;
     return static_cast<int>(window_.count()) >= required_;
   }
   int required() const { return required_; }

@@ -118,14 +118,24 @@ TEST(InterpreterSplines, EqualWeightsOnAllPointsChangeNothing) {
 }
 
 TEST(InterpreterSplines, TooFewSplineBlocksInTenIsAnAlarm) {
-  // A spline needs 4 end-point blocks in every window of 10; here only 3 of 10.
+  // A spline needs 4 end-point blocks in every window of 10; the window ending with X4 (line 14)
+  // holds 3 of 10.
   std::string text = "G0 X0 Y0 Z0\nG1 F600\nASPLINE\nX1 Y1\nX2 Y0\nX3 Y1\n";
   for (int i = 0; i < 7; ++i) text += "M8\n";
   text += "X4 Y0\nM30\n";
   auto r = run_program(text);
   ASSERT_TRUE(r->alarm);
   EXPECT_EQ(r->alarm->number, 990001);
-  EXPECT_EQ(r->alarm->where.line, 13u);
+  EXPECT_EQ(r->alarm->where.line, 14u);
+}
+
+TEST(InterpreterSplines, QuotaIsNotJudgedAfterTheLastPointOfARun) {
+  // Ending a C-spline run with non-spline blocks (M17, G40 ...) is fine, as in the experiment.
+  std::string text = "G0 X0 Y0 Z0\nG1 F600\nCSPLINE\n";
+  for (int i = 1; i <= 12; ++i) text += "X" + std::to_string(i) + " Y" + std::to_string(i % 2) + "\n";
+  text += "M8\nM9\nG1 X20 Y0\nM30\n";
+  auto r = run_program(text);
+  EXPECT_FALSE(r->alarm) << r->alarm->format();
 }
 
 }  // namespace

@@ -1,0 +1,104 @@
+// `drycut run PROGRAM [--machine FILE] [--json FILE] [--trace FILE.csv]`: plans the program on the
+// machine and reports time, feed and dips.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/exit_code.hpp"
+#include "app/program_pipeline.hpp"
+#include "interp/cutter_compensation.hpp"
+#include "motion/planner.hpp"
+#include "report/run_report_writer.hpp"
+#include "report/trace_csv_writer.hpp"
+
+namespace drycut::app {
+namespace {
+
+struct RunOptions {
+  ProgramOptions program;
+  std::string json_file;
+  std::string trace_file;
+  size_t dips_shown = 10;
+};
+
+using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+FilePtr open_output(const std::string& path) {
+  FilePtr f(std::fopen(path.c_str(), "w"), &std::fclose);
+  if (!f) throw UsageError("cannot write " + path);
+  return f;
+}
+
+void print_summary(const RunOptions& o, const machine::MachineProfile& profile, const motion::PlanSummary& s) {
+  std::printf("%s on %s\n", std::filesystem::path(o.program.program).filename().string().c_str(), profile.name.c_str());
+  std::printf("  time               %9.2f s\n", s.time_s);
+  std::printf("  time after M0      %9.2f s\n", s.time_after_m0_s);
+  std::printf("  path length        %9.1f mm\n", s.path_length_mm);
+  std::printf("  feed while cutting %9.0f .. %.0f mm/min\n", s.min_feed_mm_s * 60, s.max_feed_mm_s * 60);
+  const size_t total_dips = s.dips.size() + s.dips_not_listed;
+  std::printf("  feed dips below 80 %% of F: %zu\n", total_dips);
+  std::vector<const motion::FeedDip*> dips;
+  for (const auto& d : s.dips) dips.push_back(&d);
+  std::sort(dips.begin(), dips.end(), [](auto* a, auto* b) { return a->v_min_mm_s < b->v_min_mm_s; });
+  for (size_t i = 0; i < std::min(dips.size(), o.dips_shown); ++i) {
+    const auto& d = *dips[i];
+    std::string block = d.min_source.text.size() > 40 ? d.min_source.text.substr(0, 37) + "..." : d.min_source.text;
+    std::printf("    %s:%u  %6.0f of %.0f mm/min  %-11s %s\n",
+                std::filesystem::path(d.min_source.file_name()).filename().string().c_str(), d.min_source.line,
+                d.v_min_mm_s * 60, d.programmed_feed_mm_s * 60, std::string(motion::to_string(d.limit)).c_str(),
+                block.c_str());
+  }
+  if (dips.size() > o.dips_shown) std::printf("    ... %zu more (see --json)\n", total_dips - o.dips_shown);
+}
+
+}  // namespace
+
+void register_run(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  CLI::App* cmd = app.add_subcommand("run", "Plan the program on the machine: time, feed, dips and their causes");
+  add_program_options(*cmd, o->program);
+  cmd->add_option("--json", o->json_file, "Write the JSON report (summary, per-block rows, dips, alarms)");
+  cmd->add_option("--trace", o->trace_file, "Write one CSV row per IPO cycle");
+  cmd->add_option("--dips", o->dips_shown, "Dips listed in the summary")->default_val(10);
+  cmd->callback([o] {
+    try {
+      const machine::MachineProfile profile = load_machine(o->program);
+      FilePtr json(nullptr, &std::fclose), trace(nullptr, &std::fclose);
+      if (!o->json_file.empty()) json = open_output(o->json_file);
+      if (!o->trace_file.empty()) trace = open_output(o->trace_file);
+
+      motion::PlanObserver none;
+      std::unique_ptr<report::RunReportWriter> report;
+      std::unique_ptr<report::TraceCsvWriter> tracer;
+      if (json) report = std::make_unique<report::RunReportWriter>(json.get(), o->program.program, profile.name);
+      if (trace) tracer = std::make_unique<report::TraceCsvWriter>(trace.get());
+      motion::PlanObserver& a = report ? static_cast<motion::PlanObserver&>(*report) : none;
+      motion::PlanObserver& b = tracer ? static_cast<motion::PlanObserver&>(*tracer) : none;
+      report::PlanObserverPair observer(a, b);
+
+      motion::PlannerOptions planner_options;
+      planner_options.emit_samples = tracer != nullptr;
+      motion::Planner planner(profile, observer, planner_options);
+      PipelineOutcome outcome;
+      {
+        // The compensation stage sits between interpreter and planner; it reports into the
+        // run's diagnostics, so it is built inside run_program's lifetime via a forwarding sink.
+        Diagnostics compensation_diagnostics;
+        interp::CutterCompensation compensation(planner, profile, compensation_diagnostics);
+        outcome = run_program(o->program, profile, compensation);
+        for (const auto& a : compensation_diagnostics.items()) outcome.diagnostics.report(a);
+      }
+      const motion::PlanSummary& summary = planner.summary();
+      if (report) report->finish(summary, outcome.diagnostics);
+      print_summary(*o, profile, summary);
+      throw ExitRequest{report_outcome(outcome)};
+    } catch (const UsageError& e) {
+      std::fprintf(stderr, "drycut run: %s\n", e.what());
+      throw ExitRequest{kExitUsage};
+    }
+  });
+}
+
+}  // namespace drycut::app

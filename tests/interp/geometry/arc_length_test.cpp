@@ -1,0 +1,62 @@
+// Arc-length accuracy of spline spans against an independent fine polyline of the parametric
+// curve, the s -> u inversion, and the derivative identities of at(s).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry_test_support.hpp"
+#include "interp/geometry/curve_sampler.hpp"
+#include "interp/geometry/line_curve.hpp"
+#include "interp/geometry/polynomial_span.hpp"
+#include "interp/geometry/spline_builder.hpp"
+
+namespace drycut::geometry {
+namespace {
+
+void check_span(const PolynomialSpan& span) {
+  const double u1 = span.parameter_end();
+  const auto f = [&](double u) { return span.derivatives(u).p; };
+  const double ref = testing::polyline_length(f, 0, u1, 400000);
+  EXPECT_NEAR(span.length() / ref, 1.0, 1e-6);
+  // Inversion: the point at the reference arc length of u is P(u).
+  for (double frac : {0.2, 0.5, 0.85}) {
+    const double u = frac * u1;
+    const double s = testing::polyline_length(f, 0, u, 200000);
+    EXPECT_LT((span.at(s).position - f(u)).norm(), 1e-6 * span.length()) << frac;
+  }
+  for (double frac : {0.1, 0.4, 0.9}) testing::expect_consistent_derivatives(span, frac * span.length(), 1e-4);
+}
+
+TEST(ArcLength, HermiteSpanWithUnevenSpeed) {
+  // Tangents of very different magnitude: the parameter speed varies by a factor of ~10.
+  const PolynomialSpan span = PolynomialSpan::hermite({0, 0, 0}, {4, 1, 0}, {0.3, 0, 0}, {0, 6, 2}, 3.0);
+  check_span(span);
+}
+
+TEST(ArcLength, RationalNurbsSpan) {
+  auto b = make_nurbs_builder(3);
+  const auto spans = testing::run_spline(*b, {{0, 0, 0}, {1, 3, 0}, {4, 3, 1}, {5, 0, 2}, {8, 1, 0}, {9, 4, 0}}, {},
+                                         {1, 3, 0.2, 2.5, 1, 1});
+  ASSERT_FALSE(spans.empty());
+  for (const auto& s : spans) check_span(dynamic_cast<const PolynomialSpan&>(*s.curve));
+}
+
+TEST(ArcLength, SplineSpanMaxCurvatureBoundsSampledCurvature) {
+  const PolynomialSpan span = PolynomialSpan::hermite({0, 0, 0}, {4, 1, 0}, {1, 0, 0}, {0, 1, 0}, 4.2);
+  double sampled = 0;
+  for (int i = 0; i <= 1000; ++i) sampled = std::max(sampled, span.at(span.length() * i / 1000).curvature);
+  EXPECT_NEAR(span.max_curvature(), sampled, 0.02 * sampled);
+}
+
+TEST(CurveSampler, EveryDsWithBothEnds) {
+  const LineCurve line({0, 0, 0}, {1.005, 0, 0});
+  const auto pts = sample_curve(line, 0.01);
+  ASSERT_EQ(pts.size(), 102u);  // 0, 0.01 .. 1.00, and the end 1.005
+  EXPECT_NEAR(pts[50].x(), 0.5, 1e-12);
+  EXPECT_EQ(pts.back(), Vec3(1.005, 0, 0));
+  EXPECT_EQ(sample_curve(line, 0.0).size(), 2u);
+  EXPECT_EQ(sample_curve(LineCurve({1, 1, 1}, {1, 1, 1}), 0.1).size(), 1u);
+}
+
+}  // namespace
+}  // namespace drycut::geometry
