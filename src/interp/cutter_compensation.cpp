@@ -143,6 +143,7 @@ void CutterCompensation::select(PathElement approach) {
   plane_ = CompensationPlane::from_normal_axis(plane_axis_);
   if (approach.compensation.radius_mm < 0.0)
     raise(10751, "negative tool radius", approach.source);
+  tool_position_ = approach.curve->start();  // the approach starts wherever the tool is
   approach_ = std::move(approach);
   phase_ = Phase::Approaching;
   dummy_count_ = 0;
@@ -256,7 +257,7 @@ void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
     for (size_t k = 0; k < index && !cut; ++k) {
       if (!window_[k].piece || window_[k].block < oldest_block) continue;
       const auto crossing = find_crossing(*window_[k].piece, *window_[index].piece, previous_piece == k, plane_);
-      if (!crossing) continue;
+      if (!crossing || !cut_out_is_defective(k, index, *crossing)) continue;
       const size_t removed_before =
           static_cast<size_t>(std::count_if(window_.begin() + static_cast<long>(k) + 1, window_.begin() + static_cast<long>(index),
                                             [](const Item& it) { return it.piece.has_value(); }));
@@ -265,7 +266,8 @@ void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
       cut = true;
     }
     if (cut) continue;  // search again from the new start of the piece
-    if (const auto loop = find_self_crossing(*window_[index].piece, plane_)) {
+    const auto loop = find_self_crossing(*window_[index].piece, plane_);
+    if (loop && window_[index].piece->runs_backwards(loop->u_earlier, loop->u_later)) {
       Item second = window_[index];
       window_[index].piece->trim(window_[index].piece->u_begin(), loop->u_earlier);
       second.piece->trim(loop->u_later, second.piece->u_end());
@@ -276,6 +278,24 @@ void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
     }
     ++index;
   }
+}
+
+bool CutterCompensation::cut_out_is_defective(size_t earlier, size_t later, const PieceCrossing& crossing) const {
+  // Only a stretch the tool cannot follow is cut out: an open inside joint (no intersection yet)
+  // or an offset running backwards. Elsewhere crossing offsets are the programmed contour's own
+  // (closed contours, loops), and the control does not cut them.
+  bool adjacent = true;
+  for (size_t i = earlier + 1; i < later; ++i) adjacent = adjacent && !window_[i].piece.has_value();
+  // The later piece's own open joint is resolved by its neighbour; a crossing further back would
+  // cut out sound pieces (the start of a closed contour, for instance).
+  if (adjacent && !window_[later].joined) return true;
+  const OffsetPiece& first = *window_[earlier].piece;
+  const OffsetPiece& last = *window_[later].piece;
+  if (first.runs_backwards(crossing.u_earlier, first.u_end())) return true;
+  if (last.runs_backwards(last.u_begin(), crossing.u_later)) return true;
+  for (size_t i = earlier + 1; i < later; ++i)
+    if (window_[i].piece && (!window_[i].joined || window_[i].piece->runs_backwards())) return true;
+  return false;
 }
 
 void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earlier, double u_later) {

@@ -39,6 +39,7 @@
 #include <deque>
 #include <optional>
 
+#include "interp/cutter_compensation_crossing.hpp"
 #include "interp/cutter_compensation_piece.hpp"
 #include "interp/path_element.hpp"
 #include "machine/alarm.hpp"
@@ -70,6 +71,7 @@ class CutterCompensation : public ElementSink {
   void deselect(PathElement retract);
   void add_motion(const PathElement& element);
   void resolve_crossings(size_t first_new, int check_blocks);
+  bool cut_out_is_defective(size_t earlier, size_t later, const PieceCrossing& crossing) const;
   void cut_between(size_t earlier, size_t later, double u_earlier, double u_later);
   void release_old_blocks(int check_blocks);
   void flush_window();

@@ -68,9 +68,12 @@ void OffsetPiece::resample() {
   }
 }
 
-bool OffsetPiece::runs_backwards() const {
-  if (offset_ == 0.0 || straight_) return false;
-  for (double u : sample_u_) {
+bool OffsetPiece::runs_backwards(double u0, double u1) const {
+  if (offset_ == 0.0 || straight_ || u1 < u0) return false;
+  std::vector<double> probes{u0, 0.5 * (u0 + u1), u1};
+  for (double u : sample_u_)
+    if (u > u0 && u < u1) probes.push_back(u);
+  for (double u : probes) {
     const geometry::CurvePoint b = base_->at(u);
     const Vec3 tangent_in_plane = b.tangent - plane_.normal * plane_.normal.dot(b.tangent);
     const double w2 = tangent_in_plane.squaredNorm();

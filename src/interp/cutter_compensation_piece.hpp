@@ -41,7 +41,9 @@ class OffsetPiece {
 
   // True where the offset runs against the programmed direction somewhere in the stretch (an
   // arc or bend tighter than the tool radius that bottleneck detection did not cut out).
-  bool runs_backwards() const;
+  bool runs_backwards() const { return runs_backwards(u_begin_, u_end_); }
+  // The same within the base parameters [u0, u1] of the stretch.
+  bool runs_backwards(double u0, double u1) const;
 
   // The tool-centre curve of the stretch: an exact LineCurve or ArcCurve where the base is a line
   // or an arc in the compensation plane, an OffsetCurve otherwise.

@@ -48,6 +48,8 @@ constexpr std::array kCatalog{
     AlarmInfo{990004, S::Alarm, "Step limit reached (endless loop?)", A::Drycut},
     AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
     AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
+    AlarmInfo{990010, S::Alarm, "Program contains no blocks", A::Drycut},
+    AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };
 
 }  // namespace

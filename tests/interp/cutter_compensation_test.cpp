@@ -426,14 +426,5 @@ TEST(CutterCompensation, KeepsFeedDynamicsAndLabelOfTheSourceBlock) {
   EXPECT_EQ(out[1].feed_mm_s, 20.0);
 }
 
-TEST(CutterCompensationDebug, Dump) {
-  StageRun run;
-  Comp comp{.side = CompensationSide::Right};
-  run.feed(square(comp));
-  for (const auto& e : run.sink.elements)
-    std::printf("%d line %u  %s -> %s len %g\n", int(e.kind), e.source.line,
-                std::to_string(e.curve->start().x()).append(",").append(std::to_string(e.curve->start().y())).c_str(),
-                std::to_string(e.curve->end().x()).append(",").append(std::to_string(e.curve->end().y())).c_str(), e.curve->length());
-}
 }  // namespace
 }  // namespace drycut::interp

@@ -48,6 +48,13 @@ ParametricDerivatives PolynomialSpan::derivatives(double u) const {
   return d;
 }
 
+double PolynomialSpan::speed(double u) const {
+  const Eigen::Vector4d h0 = c_.col(0) + u * (c_.col(1) + u * (c_.col(2) + u * c_.col(3)));
+  const Eigen::Vector4d h1 = c_.col(1) + u * (2.0 * c_.col(2) + 3.0 * u * c_.col(3));
+  // d(A/w)/du = (A' w - A w') / w^2
+  return (h1.head<3>() * h0(3) - h0.head<3>() * h1(3)).norm() / (h0(3) * h0(3));
+}
+
 double PolynomialSpan::parameter_at(double s) const {
   const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
   return table_.parameter_at(sp, s);

@@ -36,7 +36,8 @@ class PolynomialSpan final : public Curve {
   static CurvePoint by_arc_length(const ParametricDerivatives& d);
 
  private:
-  double speed(double u) const { return derivatives(u).d1.norm(); }
+  // |dP/du| only (the arc-length integrand): skips the higher derivatives.
+  double speed(double u) const;
 
   Eigen::Matrix4d c_;
   double u_end_;

@@ -50,11 +50,13 @@ std::unique_ptr<SplineBuilder> make_akima_builder(const SplineEnd& begin);
 
 // CSPLINE: cubic, chord-length parameter, one cubic per block. window_blocks = MD20160:
 //  0  -> one global C2 spline through the whole run, solved at finish (holds the run).
-//  W>0 -> the tangent at point j is that of the cubic spline through the points j-W/2..j+W/2
-//         (clipped to the run; W blocks in all when the run allows), using the run's end
-//         conditions where the window reaches a run end and the 3-point parabola tangent where
-//         the window is cut. Consecutive spans share tangents: C1 exactly, C2 to within the
-//         window effect (decays like 0.27^(W/2)).
+//  W>0 -> the tangent at interior point j is that of the cubic spline through the points
+//         j-h..j+h, h = max(2, W/2) (clipped to the run), using the run's end conditions where
+//         the window reaches a run end and the 3-point parabola tangent where it is cut off.
+//         The first and last tangents are then derived from their neighbours so that the end
+//         condition holds exactly for the end spans. Consecutive spans share tangents: C1
+//         exactly, C2 to within the window effect (decays like 0.27 per point).
+//         Span i is final once point i+h+1 has arrived.
 // End conditions: Natural P''=0, Tangent P' = unit direction, Auto = not-a-knot.
 std::unique_ptr<SplineBuilder> make_cubic_builder(const SplineEnd& begin, int window_blocks);
 

@@ -1,0 +1,57 @@
+#include "parser/expression_api.hpp"
+
+#include <vector>
+
+#include "machine/alarm.hpp"
+#include "parser/expression_evaluator.hpp"
+#include "parser/expression_parser.hpp"
+#include "parser/lexer.hpp"
+#include "parser/line_error.hpp"
+
+namespace drycut::parser {
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return out;
+}
+
+class MapVariables : public VariableSource {
+ public:
+  explicit MapVariables(const std::map<std::string, double>& vars) {
+    for (const auto& [k, v] : vars) upper_vars_[upper(k)] = v;
+  }
+  double variable(std::string_view name, uint32_t column) const override {
+    if (auto it = upper_vars_.find(std::string(name)); it != upper_vars_.end()) return it->second;
+    if (name == "TRUE") return 1.0;
+    if (name == "FALSE") return 0.0;
+    throw LineError(12550, column, "name " + std::string(name) + " not defined");
+  }
+  double r_parameter(double, uint32_t) const override { return 0.0; }
+
+ private:
+  std::map<std::string, double> upper_vars_;
+};
+
+}  // namespace
+
+double evaluate_expression(std::string_view text, const std::map<std::string, double>& vars) {
+  try {
+    Lexer lexer;
+    std::vector<Token> tokens;
+    lexer.tokenize(text, tokens);
+    ExprPool pool;
+    size_t pos = 0;
+    const ExprIndex root = ExpressionParser(tokens, pos, pool).parse();
+    if (tokens[pos].kind != TokenKind::End)
+      throw LineError(12080, tokens[pos].column, "unexpected '" + std::string(tokens[pos].text) + "'");
+    return evaluate(pool, root, MapVariables(vars));
+  } catch (const LineError& e) {
+    throw AlarmError(make_alarm(e.number(), e.detail(), SourceLocation{"<expression>", 1, e.column()},
+                                std::string(text)));
+  }
+}
+
+}  // namespace drycut::parser

@@ -1,0 +1,180 @@
+#include "parser/lexer.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <cstdint>
+#include <string>
+
+#include "parser/line_error.hpp"
+
+namespace drycut::parser {
+namespace {
+
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+inline bool is_name_start(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c == '$';
+}
+inline bool is_name_char(char c) { return is_name_start(c) || is_digit(c); }
+
+std::string describe_char(char c) {
+  const auto b = static_cast<unsigned char>(c);
+  if (b >= 0x21 && b < 0x7F) return std::string("invalid character '") + c + "'";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "invalid byte 0x%02X", b);
+  return buf;
+}
+
+// Scans digits [. digits] starting at i; returns the end. Column used for errors only.
+size_t scan_number(std::string_view s, size_t i) {
+  while (i < s.size() && is_digit(s[i])) ++i;
+  if (i < s.size() && s[i] == '.') {
+    ++i;
+    while (i < s.size() && is_digit(s[i])) ++i;
+  }
+  return i;
+}
+
+double to_double(std::string_view text, uint32_t column) {
+  double v = 0.0;
+  // "5." is valid NC: from_chars stops before a lone trailing dot, so parse without it.
+  std::string_view digits = text;
+  if (!digits.empty() && digits.back() == '.') digits.remove_suffix(1);
+  if (digits.empty() || digits == ".") throw LineError(12080, column, "malformed number");
+  const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (r.ec != std::errc() || r.ptr != digits.data() + digits.size())
+    throw LineError(12080, column, "malformed number '" + std::string(text) + "'");
+  return v;
+}
+
+}  // namespace
+
+void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
+  out.clear();
+  upper_.assign(line);
+  for (char& c : upper_)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  const std::string_view s = upper_;
+  const size_t n = s.size();
+  size_t i = 0;
+  auto col = [](size_t pos) { return static_cast<uint32_t>(pos + 1); };
+  auto push = [&](TokenKind k, size_t start, size_t len) {
+    out.push_back(Token{k, col(start), s.substr(start, len), 0.0});
+  };
+  while (i < n) {
+    const char c = s[i];
+    if (c == ' ' || c == '\t' || c == '&') {  // '&' acts like a space on SINUMERIK
+      ++i;
+      continue;
+    }
+    if (c == ';') break;  // comment to end of line
+    if (is_name_start(c)) {
+      const size_t start = i;
+      if (s[i] == '$') ++i;  // system variables: $AA_IM, $P_TOOL
+      while (i < n && ((s[i] >= 'A' && s[i] <= 'Z') || s[i] == '_')) ++i;
+      const size_t letters_end = i;
+      while (i < n && is_digit(s[i])) ++i;
+      if (letters_end - start == 1 && i > letters_end && i < n && s[i] == '.') {
+        // "X12.345": an address letter, then a decimal number.
+        push(TokenKind::Name, start, 1);
+        const size_t num_end = scan_number(s, letters_end);
+        Token t{TokenKind::Number, col(letters_end), s.substr(letters_end, num_end - letters_end), 0.0};
+        t.number = to_double(t.text, t.column);
+        out.push_back(t);
+        i = num_end;
+        continue;
+      }
+      while (i < n && is_name_char(s[i])) ++i;
+      // A program name may carry its extension: EKVI_POSTUPNE_45.SPF
+      if (i + 4 <= n && s[i] == '.' && (s.substr(i + 1, 3) == "SPF" || s.substr(i + 1, 3) == "MPF") &&
+          (i + 4 == n || !is_name_char(s[i + 4])))
+        i += 4;
+      push(TokenKind::Name, start, i - start);
+      continue;
+    }
+    if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(s[i + 1]))) {
+      const size_t end = scan_number(s, i);
+      Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
+      t.number = to_double(t.text, t.column);
+      out.push_back(t);
+      i = end;
+      if (i < n && is_name_start(s[i]))
+        throw LineError(12080, col(i), "unexpected name right after a number");
+      continue;
+    }
+    switch (c) {
+      case '"': {
+        const size_t close = line.find('"', i + 1);
+        if (close == std::string_view::npos)
+          throw LineError(12080, col(i), "unterminated string (missing \")");
+        // Strings keep their case: take them from the original line.
+        out.push_back(Token{TokenKind::String, col(i), line.substr(i + 1, close - i - 1), 0.0});
+        i = close + 1;
+        continue;
+      }
+      case '\'': {  // 'H1F' hexadecimal, 'B101' binary constants
+        const size_t close = s.find('\'', i + 1);
+        if (close == std::string_view::npos || close < i + 3)
+          throw LineError(12080, col(i), "unterminated or empty constant (missing ')");
+        const int base = s[i + 1] == 'H' ? 16 : s[i + 1] == 'B' ? 2 : 0;
+        uint64_t v = 0;
+        const char* first = s.data() + i + 2;
+        const char* last = s.data() + close;
+        const auto r = base ? std::from_chars(first, last, v, base) : std::from_chars_result{first, std::errc::invalid_argument};
+        if (r.ec != std::errc() || r.ptr != last)
+          throw LineError(12080, col(i), "malformed 'H..' or 'B..' constant");
+        Token t{TokenKind::Number, col(i), s.substr(i, close + 1 - i), static_cast<double>(v)};
+        out.push_back(t);
+        i = close + 1;
+        continue;
+      }
+      case '(': push(TokenKind::LParen, i, 1); ++i; continue;
+      case ')': push(TokenKind::RParen, i, 1); ++i; continue;
+      case '[': push(TokenKind::LBracket, i, 1); ++i; continue;
+      case ']': push(TokenKind::RBracket, i, 1); ++i; continue;
+      case ',': push(TokenKind::Comma, i, 1); ++i; continue;
+      case '+': push(TokenKind::Plus, i, 1); ++i; continue;
+      case '-': push(TokenKind::Minus, i, 1); ++i; continue;
+      case '*': push(TokenKind::Star, i, 1); ++i; continue;
+      case '/': push(TokenKind::Slash, i, 1); ++i; continue;
+      case ':': push(TokenKind::Colon, i, 1); ++i; continue;
+      case '=':
+        if (i + 1 < n && s[i + 1] == '=') {
+          push(TokenKind::Equal, i, 2);
+          i += 2;
+        } else {
+          push(TokenKind::Assign, i, 1);
+          ++i;
+        }
+        continue;
+      case '<':
+        if (i + 1 < n && s[i + 1] == '>') {
+          push(TokenKind::NotEqual, i, 2);
+          i += 2;
+        } else if (i + 1 < n && s[i + 1] == '=') {
+          push(TokenKind::LessEqual, i, 2);
+          i += 2;
+        } else if (i + 1 < n && s[i + 1] == '<') {
+          push(TokenKind::Concat, i, 2);
+          i += 2;
+        } else {
+          push(TokenKind::Less, i, 1);
+          ++i;
+        }
+        continue;
+      case '>':
+        if (i + 1 < n && s[i + 1] == '=') {
+          push(TokenKind::GreaterEqual, i, 2);
+          i += 2;
+        } else {
+          push(TokenKind::Greater, i, 1);
+          ++i;
+        }
+        continue;
+      default:
+        throw LineError(12080, col(i), describe_char(c));
+    }
+  }
+  out.push_back(Token{TokenKind::End, col(i), std::string_view(), 0.0});
+}
+
+}  // namespace drycut::parser

@@ -1,0 +1,383 @@
+#include "parser/line_parser.hpp"
+
+#include <charconv>
+#include <string>
+
+#include "parser/expression_parser.hpp"
+#include "parser/line_error.hpp"
+
+namespace drycut::parser {
+namespace {
+
+// Splits "G642" into letters "G" and digits "642"; false when the name is not of that shape.
+bool split_letters_digits(std::string_view name, std::string_view& letters, int64_t& value) {
+  size_t i = 0;
+  while (i < name.size() && name[i] >= 'A' && name[i] <= 'Z') ++i;
+  if (i == 0 || i == name.size()) return false;
+  letters = name.substr(0, i);
+  const auto r = std::from_chars(name.data() + i, name.data() + name.size(), value);
+  return r.ec == std::errc() && r.ptr == name.data() + name.size();
+}
+
+bool is_block_number_name(std::string_view name, int64_t& value) {
+  std::string_view letters;
+  return split_letters_digits(name, letters, value) && letters == "N";
+}
+
+std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
+
+}  // namespace
+
+ExprIndex LineParser::expression(ParsedLine& out) {
+  return ExpressionParser(tokens_, pos_, out.pool).parse();
+}
+
+void LineParser::expect_end() {
+  if (peek().kind != TokenKind::End) {
+    if (peek().kind == TokenKind::RParen) throw LineError(12080, peek().column, "unbalanced ')'");
+    throw LineError(12080, peek().column, "unexpected " + quoted(peek().text));
+  }
+}
+
+void LineParser::parse(std::string_view line, ParsedLine& out) {
+  out.clear();
+  lexer_.tokenize(line, tokens_);
+  pos_ = 0;
+  parse_head(out);
+  if (parse_statement(out)) {
+    if (out.is_control_structure() && (out.skip_level >= 0 || !out.label.empty()))
+      throw LineError(12630, out.skip_level >= 0 ? out.skip_column : out.label_column,
+                      "skip marker or label in a control-structure block");
+    return;
+  }
+  parse_words(out);
+}
+
+void LineParser::parse_head(ParsedLine& out) {
+  if (peek().kind == TokenKind::Slash) {
+    out.skip_column = peek().column;
+    out.skip_level = 0;
+    ++pos_;
+    // "/3": the level digit must follow the slash directly.
+    if (peek().kind == TokenKind::Number && peek().column == out.skip_column + 1) {
+      const double v = peek().number;
+      if (v != static_cast<int>(v) || v < 0 || v > 9)
+        throw LineError(14060, out.skip_column, "skip level " + std::string(peek().text) + " (0..9 allowed)");
+      out.skip_level = static_cast<int>(v);
+      ++pos_;
+    }
+  }
+  // Block number and label, in either order: "N10 LABEL:" or "LABEL: N10".
+  for (int round = 0; round < 2; ++round) {
+    int64_t number = 0;
+    if (!out.number && peek().kind == TokenKind::Name && is_block_number_name(peek().text, number) &&
+        peek(1).kind != TokenKind::Colon) {
+      out.number = number;
+      out.number_column = peek().column;
+      ++pos_;
+    } else if (!out.number && peek().kind == TokenKind::Colon && peek(1).kind == TokenKind::Number) {
+      out.number = static_cast<int64_t>(peek(1).number);  // ":100" main block
+      out.number_column = peek().column;
+      pos_ += 2;
+    }
+    if (out.label.empty() && peek().kind == TokenKind::Name && peek(1).kind == TokenKind::Colon) {
+      out.label = peek().text;
+      out.label_column = peek().column;
+      pos_ += 2;
+    }
+  }
+}
+
+void LineParser::parse_jump_target(ParsedLine& out) {
+  const Token& t = peek();
+  out.target.column = t.column;
+  int64_t number = 0;
+  if (t.kind == TokenKind::Name && is_block_number_name(t.text, number)) {
+    out.target.number = number;
+  } else if (t.kind == TokenKind::Name) {
+    out.target.label = t.text;
+  } else if (t.kind == TokenKind::Number) {
+    out.target.number = static_cast<int64_t>(t.number);
+  } else {
+    throw LineError(12080, t.column, "jump target (label or block number) expected");
+  }
+  ++pos_;
+}
+
+void LineParser::parse_def(ParsedLine& out) {
+  const Token& type = peek();
+  if (type.kind != TokenKind::Name ||
+      !(type.text == "INT" || type.text == "REAL" || type.text == "BOOL" || type.text == "CHAR" ||
+        type.text == "STRING" || type.text == "AXIS" || type.text == "FRAME"))
+    throw LineError(12080, type.column, "DEF needs a type: INT REAL BOOL CHAR STRING AXIS FRAME");
+  out.def_type = type.text;
+  ++pos_;
+  if (out.def_type == "STRING") {  // STRING[32]
+    if (peek().kind != TokenKind::LBracket || peek(1).kind != TokenKind::Number ||
+        peek(2).kind != TokenKind::RBracket)
+      throw LineError(12080, peek().column, "STRING needs a length: STRING[n]");
+    pos_ += 3;
+  }
+  for (;;) {
+    const Token& name = peek();
+    if (name.kind != TokenKind::Name || is_expression_keyword(name.text))
+      throw LineError(12080, name.column, "variable name expected");
+    DefEntry e{name.text, kNoExpr, name.column};
+    ++pos_;
+    if (peek().kind == TokenKind::Assign) {
+      ++pos_;
+      e.init = expression(out);
+    }
+    out.defs.push_back(e);
+    if (peek().kind != TokenKind::Comma) break;
+    ++pos_;
+  }
+  expect_end();
+}
+
+void LineParser::parse_proc(ParsedLine& out) {
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "program name expected after PROC");
+  out.call_name = peek().text;
+  ++pos_;
+  if (peek().kind == TokenKind::LParen) {
+    ++pos_;
+    while (peek().kind != TokenKind::RParen) {
+      // "REAL A", "INT B", "VAR REAL C" (call by reference: treated as by value here)
+      if (peek().kind == TokenKind::Name && peek().text == "VAR") ++pos_;
+      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "parameter type expected");
+      ++pos_;
+      if (peek().kind == TokenKind::LBracket) {  // STRING[n]
+        while (peek().kind != TokenKind::RBracket && peek().kind != TokenKind::End) ++pos_;
+        if (peek().kind == TokenKind::End) throw LineError(12080, peek().column, "missing ']'");
+        ++pos_;
+      }
+      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "parameter name expected");
+      out.defs.push_back(DefEntry{peek().text, kNoExpr, peek().column});
+      ++pos_;
+      if (peek().kind == TokenKind::Comma) {
+        ++pos_;
+        continue;
+      }
+      if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')' in PROC");
+    }
+    ++pos_;
+  }
+  // SAVE, DISPLOF, SBLOF ... attributes change nothing for a dry run.
+  while (peek().kind == TokenKind::Name) ++pos_;
+  expect_end();
+}
+
+bool LineParser::parse_statement(ParsedLine& out) {
+  const Token& t = peek();
+  if (t.kind != TokenKind::Name) return false;
+  const std::string_view w = t.text;
+  out.statement_column = t.column;
+  auto simple = [&](Statement s) {
+    out.statement = s;
+    ++pos_;
+    expect_end();
+    return true;
+  };
+  auto jump_direction = [](std::string_view word, JumpDirection& d) {
+    if (word == "GOTOF") d = JumpDirection::Forward;
+    else if (word == "GOTOB") d = JumpDirection::Backward;
+    else if (word == "GOTO") d = JumpDirection::ForwardThenBackward;
+    else if (word == "GOTOC") d = JumpDirection::NoAlarm;
+    else return false;
+    return true;
+  };
+  if (w == "IF") {
+    ++pos_;
+    out.condition = expression(out);
+    if (peek().kind == TokenKind::Name && jump_direction(peek().text, out.jump)) {
+      out.statement = Statement::IfGoto;
+      ++pos_;
+      parse_jump_target(out);
+    } else {
+      out.statement = Statement::If;
+    }
+    expect_end();
+    return true;
+  }
+  if (w == "ELSE") return simple(Statement::Else);
+  if (w == "ENDIF") return simple(Statement::EndIf);
+  if (w == "ENDWHILE") return simple(Statement::EndWhile);
+  if (w == "ENDFOR") return simple(Statement::EndFor);
+  if (w == "REPEAT") return simple(Statement::Repeat);
+  if (w == "LOOP") return simple(Statement::Loop);
+  if (w == "ENDLOOP") return simple(Statement::EndLoop);
+  if (w == "WHILE" || w == "UNTIL") {
+    out.statement = w == "WHILE" ? Statement::While : Statement::Until;
+    ++pos_;
+    out.condition = expression(out);
+    expect_end();
+    return true;
+  }
+  if (w == "FOR") {
+    out.statement = Statement::For;
+    ++pos_;
+    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "loop variable expected after FOR");
+    out.for_variable = peek().text;
+    ++pos_;
+    if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after the FOR variable");
+    ++pos_;
+    out.condition = expression(out);
+    if (!(peek().kind == TokenKind::Name && peek().text == "TO"))
+      throw LineError(12080, peek().column, "TO expected in FOR");
+    ++pos_;
+    out.for_end = expression(out);
+    expect_end();
+    return true;
+  }
+  if (jump_direction(w, out.jump)) {
+    out.statement = Statement::Goto;
+    ++pos_;
+    parse_jump_target(out);
+    expect_end();
+    return true;
+  }
+  if (w == "DEF") {
+    out.statement = Statement::Def;
+    ++pos_;
+    parse_def(out);
+    return true;
+  }
+  if (w == "PROC") {
+    out.statement = Statement::Proc;
+    ++pos_;
+    parse_proc(out);
+    return true;
+  }
+  if (w == "CALL") {
+    out.statement = Statement::Call;
+    ++pos_;
+    if (peek().kind != TokenKind::String && peek().kind != TokenKind::Name)
+      throw LineError(12080, peek().column, "program name expected after CALL");
+    out.call_name = peek().text;
+    out.target.column = peek().column;
+    ++pos_;
+    // Optional passes: CALL "SUB" P3
+    int64_t passes = 0;
+    std::string_view letters;
+    if (peek().kind == TokenKind::Name && split_letters_digits(peek().text, letters, passes) && letters == "P") {
+      out.items.push_back(Item{ItemKind::Passes, peek().text, passes, -1, kNoExpr, kNoExpr, peek().column, 0, 0});
+      ++pos_;
+    }
+    expect_end();
+    return true;
+  }
+  return false;
+}
+
+void LineParser::parse_words(ParsedLine& out) {
+  while (peek().kind != TokenKind::End) {
+    const Token& t = peek();
+    if (t.kind != TokenKind::Name) {
+      if (t.kind == TokenKind::RParen) throw LineError(12080, t.column, "unbalanced ')'");
+      throw LineError(12080, t.column, "unexpected " + quoted(t.text));
+    }
+    Item item;
+    item.name = t.text;
+    item.column = t.column;
+    const Token& next = peek(1);
+    if (next.kind == TokenKind::Assign) {
+      pos_ += 2;
+      int64_t ext = 0;
+      std::string_view letters;
+      if (t.text == "T" && peek().kind == TokenKind::String) {
+        item.kind = ItemKind::ToolName;
+        item.name = peek().text;  // case preserved
+        ++pos_;
+      } else if (split_letters_digits(t.text, letters, ext) && letters == "M") {
+        item.kind = ItemKind::M;  // M1=3: spindle 1, M3
+        item.extension = static_cast<int>(ext);
+        item.expr = expression(out);
+      } else {
+        item.kind = ItemKind::Assign;
+        item.expr = expression(out);
+      }
+    } else if (t.text == "R" && next.kind == TokenKind::LBracket) {
+      pos_ += 2;
+      item.kind = ItemKind::Assign;
+      item.index = expression(out);
+      if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
+      ++pos_;
+      if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
+      ++pos_;
+      item.expr = expression(out);
+    } else if (next.kind == TokenKind::LParen) {
+      pos_ += 2;
+      item.kind = ItemKind::Procedure;
+      // Arguments may be empty: CYCLE800(,"TABLE",1)
+      ExprIndex args[64];
+      uint32_t count = 0;
+      if (peek().kind != TokenKind::RParen) {
+        for (;;) {
+          if (count == 64) throw LineError(12080, peek().column, "too many arguments");
+          args[count++] = (peek().kind == TokenKind::Comma || peek().kind == TokenKind::RParen) ? kNoExpr : expression(out);
+          if (peek().kind == TokenKind::Comma) {
+            ++pos_;
+            continue;
+          }
+          break;
+        }
+      }
+      if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
+      ++pos_;
+      item.arg_first = static_cast<uint32_t>(out.pool.args.size());
+      item.arg_count = count;
+      out.pool.args.insert(out.pool.args.end(), args, args + count);
+    } else {
+      ++pos_;
+      std::string_view letters;
+      int64_t digits = 0;
+      const bool letter_digits = split_letters_digits(t.text, letters, digits) && letters.size() == 1;
+      if (letter_digits) {
+        item.name = letters;
+        switch (letters[0]) {
+          case 'G': item.kind = ItemKind::G; item.code = digits; break;
+          case 'M': item.kind = ItemKind::M; item.code = digits; break;
+          case 'L': item.kind = ItemKind::LCall; item.code = digits; item.name = t.text; break;
+          case 'P': item.kind = ItemKind::Passes; item.code = digits; break;
+          case 'N': throw LineError(12080, t.column, "block number must stand at the start of the block");
+          case 'R': throw LineError(12080, t.column, "R parameter without '=' assignment");
+          default: {
+            item.kind = ItemKind::Address;
+            // The digits as written: "X0012" is 12, value parsed from the text, not the int.
+            double v = 0;
+            std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v);
+            item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, t.column + 1, kNoExpr, kNoExpr, v, t.text.substr(1)});
+          }
+        }
+      } else if (t.text.size() == 1 && t.text[0] != '_' && t.text[0] != '$' &&
+                 (peek().kind == TokenKind::Number ||
+                  ((peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) &&
+                   peek(1).kind == TokenKind::Number))) {
+        // "X-6.789", "X.5", "X 12": an address letter with a signed literal.
+        double sign = 1.0;
+        if (peek().kind != TokenKind::Number) {
+          sign = peek().kind == TokenKind::Minus ? -1.0 : 1.0;
+          ++pos_;
+        }
+        const Token& num = peek();
+        ++pos_;
+        const double v = sign * num.number;
+        const char letter = t.text[0];
+        if (letter == 'G' || letter == 'M' || letter == 'L' || letter == 'P' || letter == 'N' || letter == 'R') {
+          if (letter == 'N' || letter == 'R' || v != static_cast<double>(static_cast<int64_t>(v)) || v < 0)
+            throw LineError(12080, t.column, "malformed " + std::string(t.text) + " word");
+          item.code = static_cast<int64_t>(v);
+          item.kind = letter == 'G' ? ItemKind::G : letter == 'M' ? ItemKind::M : letter == 'L' ? ItemKind::LCall : ItemKind::Passes;
+        } else {
+          item.kind = ItemKind::Address;
+          item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, num.column, kNoExpr, kNoExpr, v, num.text});
+        }
+      } else {
+        item.kind = ItemKind::Name;
+      }
+    }
+    out.items.push_back(item);
+  }
+}
+
+}  // namespace drycut::parser

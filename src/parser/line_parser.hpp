@@ -1,0 +1,37 @@
+#pragma once
+// Turns one line into a ParsedLine (syntax only). Owns the lexer so one LineParser, reused,
+// parses a whole program without per-line allocation.
+#include <string_view>
+#include <vector>
+
+#include "parser/lexer.hpp"
+#include "parser/parsed_line.hpp"
+
+namespace drycut::parser {
+
+class LineParser {
+ public:
+  // Parses `line` (decoded UTF-8, must outlive the result) into `out`. Throws LineError.
+  void parse(std::string_view line, ParsedLine& out);
+  const std::vector<Token>& tokens() const { return tokens_; }
+
+ private:
+  void parse_head(ParsedLine& out);
+  bool parse_statement(ParsedLine& out);
+  void parse_words(ParsedLine& out);
+  void parse_jump_target(ParsedLine& out);
+  void parse_def(ParsedLine& out);
+  void parse_proc(ParsedLine& out);
+  ExprIndex expression(ParsedLine& out);
+  void expect_end();
+  const Token& peek(size_t ahead = 0) const {
+    const size_t i = pos_ + ahead;
+    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  }
+
+  Lexer lexer_;
+  std::vector<Token> tokens_;
+  size_t pos_ = 0;
+};
+
+}  // namespace drycut::parser

@@ -1,0 +1,56 @@
+#pragma once
+// Streams a program file line by line with a fixed buffer, so a 400 MB program costs no more
+// memory than a small one. Every line knows its byte offset, which is what backward jumps and
+// loops seek to.
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+namespace drycut::parser {
+
+// Where a line starts: byte offset in the file and its 1-based line number.
+struct LinePosition {
+  uint64_t offset = 0;
+  uint32_t line = 1;
+};
+
+struct RawLine {
+  std::string_view bytes;  // without "\n" / "\r\n"; valid until the next call to next()
+  LinePosition position;
+  bool too_long = false;   // the line exceeded max_line_length; bytes holds only its start
+};
+
+class LineReader {
+ public:
+  // A line longer than this is reported (too_long) and its rest skipped, never buffered.
+  static constexpr size_t kMaxLineLength = 64 * 1024;
+
+  LineReader() = default;
+  ~LineReader();
+  LineReader(const LineReader&) = delete;
+  LineReader& operator=(const LineReader&) = delete;
+
+  // False when the file cannot be opened.
+  bool open(const std::filesystem::path& path);
+  bool next(RawLine& out);
+  // Continues reading at a position obtained from an earlier RawLine.
+  void seek(const LinePosition& position);
+  // Position of the line the next call to next() returns.
+  LinePosition tell() const { return next_position_; }
+  bool read_error() const { return read_error_; }
+
+ private:
+  bool fill();  // reads more bytes behind the unread ones; false at end of file
+
+  int fd_ = -1;
+  std::vector<char> buffer_;
+  size_t begin_ = 0;  // first unread byte in buffer_
+  size_t end_ = 0;    // one past the last valid byte
+  uint64_t buffer_file_offset_ = 0;  // file offset of buffer_[0]
+  bool eof_ = false;
+  bool read_error_ = false;
+  LinePosition next_position_;
+};
+
+}  // namespace drycut::parser

@@ -1,0 +1,72 @@
+#include "parser/program_files.hpp"
+
+#include <system_error>
+
+namespace drycut::parser {
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return out;
+}
+
+bool ends_with(std::string_view s, std::string_view tail) {
+  return s.size() >= tail.size() && s.substr(s.size() - tail.size()) == tail;
+}
+
+}  // namespace
+
+ProgramName normalize_program_name(std::string_view written) {
+  ProgramName p;
+  std::string s = upper(written);
+  if (ends_with(s, ".SPF") || ends_with(s, ".MPF")) {
+    p.extension = s.substr(s.size() - 3);
+    s.resize(s.size() - 4);
+  }
+  if (s.size() > 7 && s.rfind("_N_", 0) == 0 && (ends_with(s, "_SPF") || ends_with(s, "_MPF"))) {
+    p.extension = s.substr(s.size() - 3);
+    s = s.substr(3, s.size() - 7);
+  }
+  p.name = std::move(s);
+  return p;
+}
+
+ProgramFiles::ProgramFiles(std::vector<std::filesystem::path> directories)
+    : directories_(std::move(directories)), listings_(directories_.size()) {}
+
+const std::unordered_map<std::string, std::filesystem::path>& ProgramFiles::listing(size_t d) {
+  if (!listings_[d]) {
+    listings_[d].emplace();
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(directories_[d], ec), end; !ec && it != end; it.increment(ec)) {
+      std::error_code file_ec;
+      if (!it->is_regular_file(file_ec)) continue;
+      // The first spelling wins if a folder holds both SUB.SPF and sub.spf.
+      listings_[d]->emplace(upper(it->path().filename().string()), it->path());
+    }
+  }
+  return *listings_[d];
+}
+
+std::optional<std::filesystem::path> ProgramFiles::find(const ProgramName& program) {
+  std::vector<std::string> candidates;
+  const std::string& n = program.name;
+  for (const std::string_view ext : {std::string_view("SPF"), std::string_view("MPF")}) {
+    if (!program.extension.empty() && program.extension != ext) continue;
+    const std::string e(ext);
+    candidates.push_back(n + "." + e);
+    candidates.push_back("_N_" + n + "_" + e + "." + e);
+    candidates.push_back("_N_" + n + "_" + e);
+  }
+  if (program.extension.empty()) candidates.push_back(n);  // a file without extension
+  for (size_t d = 0; d < directories_.size(); ++d) {
+    const auto& files = listing(d);
+    for (const auto& c : candidates)
+      if (auto it = files.find(c); it != files.end()) return it->second;
+  }
+  return std::nullopt;
+}
+
+}  // namespace drycut::parser

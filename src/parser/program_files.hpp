@@ -1,0 +1,35 @@
+#pragma once
+// Finds subprogram files along the search path. Program names are case-insensitive on the
+// control, so file names are matched case-insensitively on disk too (EKVI_POSTUPNE_45.SPF and
+// ekvi_postupne_45.spf are the same program).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace drycut::parser {
+
+// "_N_SUB_SPF", "sub.spf", "SUB" -> name "SUB", extension "SPF" / "" (none given).
+struct ProgramName {
+  std::string name;       // upper case
+  std::string extension;  // "SPF", "MPF" or empty
+};
+ProgramName normalize_program_name(std::string_view written);
+
+class ProgramFiles {
+ public:
+  explicit ProgramFiles(std::vector<std::filesystem::path> directories);
+  // First directory wins; within it SPF before MPF unless the extension was given.
+  std::optional<std::filesystem::path> find(const ProgramName& program);
+
+ private:
+  const std::unordered_map<std::string, std::filesystem::path>& listing(size_t directory);
+
+  std::vector<std::filesystem::path> directories_;
+  // Upper-case file name -> path, per directory, read once.
+  std::vector<std::optional<std::unordered_map<std::string, std::filesystem::path>>> listings_;
+};
+
+}  // namespace drycut::parser

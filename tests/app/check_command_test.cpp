@@ -1,0 +1,113 @@
+// The `drycut check` command-line contract: exit codes 0/1/2, the summary line, --json,
+// --search-path, --max-steps.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliRun {
+  int exit_code = -1;
+  std::string out;
+};
+
+CliRun run(const std::string& args, bool with_stderr = false) {
+  const std::string cmd = std::string("'" DRYCUT_BINARY "' check ") + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
+  CliRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buf[4096];
+  while (size_t n = fread(buf, 1, sizeof buf, pipe)) r.out.append(buf, n);
+  const int status = pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+class CheckCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("drycut_check_cli_" + std::to_string(::getpid()));
+    fs::create_directories(dir_ / "subs");
+    write("MAIN.MPF", "N10 G1 X1 F100\nN20 SOFT\nN30 ekvi_sub P2\nN40 TRAORI\nN50 M30\n");
+    write("subs/EKVI_SUB.SPF", "G1 Y1\nM17\n");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+  }
+  std::string path(const std::string& name) const { return "'" + (dir_ / name).string() + "'"; }
+  fs::path dir_;
+};
+
+TEST_F(CheckCommand, CleanProgramExitsZeroWithSummary) {
+  const CliRun r = run(path("MAIN.MPF") + " --search-path " + path("subs"));
+  EXPECT_EQ(r.exit_code, 0);
+  // Blocks: N10, N20, 2 x (G1 Y1, M17), N50 = 7 (TRAORI alone is not modelled: dropped).
+  EXPECT_NE(r.out.find("7 blocks executed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 programs used"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckCommand, NotModelledCommandIsAWarningNotAnAlarm) {
+  const CliRun r = run(path("MAIN.MPF") + " --search-path " + path("subs"), true);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find(":4:5: WARNING 990002"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("TRAORI"), std::string::npos);
+}
+
+TEST_F(CheckCommand, JsonOutputCarriesCountsAndAlarms) {
+  const CliRun r = run(path("MAIN.MPF") + " --search-path " + path("subs") + " --json");
+  EXPECT_EQ(r.exit_code, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["blocks_executed"], 7);
+  EXPECT_EQ(j["programs_used"], 2);
+  // G1, M17, M30, SOFT
+  EXPECT_EQ(j["distinct_commands"], 4);
+  ASSERT_EQ(j["alarms"].size(), 1u);
+  EXPECT_EQ(j["alarms"][0]["number"], 990002);
+  EXPECT_EQ(j["alarms"][0]["severity"], "warning");
+  EXPECT_EQ(j["alarms"][0]["line"], 4);
+}
+
+TEST_F(CheckCommand, MissingSubprogramWithoutSearchPathIsAlarmExitOne) {
+  const CliRun r = run(path("MAIN.MPF"), true);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("MAIN.MPF:3:5: ALARM 14011"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| N30 ekvi_sub P2"), std::string::npos) << r.out;
+}
+
+TEST_F(CheckCommand, JsonListsTheAlarm) {
+  const CliRun r = run(path("MAIN.MPF") + " --json");
+  EXPECT_EQ(r.exit_code, 1);
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_FALSE(j["alarms"].empty());
+  EXPECT_EQ(j["alarms"].back()["number"], 14011);
+  EXPECT_EQ(j["alarms"].back()["line"], 3);
+  EXPECT_EQ(j["alarms"].back()["column"], 5);
+}
+
+TEST_F(CheckCommand, MissingMainFileIsUsageErrorExitTwo) {
+  EXPECT_EQ(run(path("NOPE.MPF")).exit_code, 2);
+}
+
+TEST_F(CheckCommand, BadFlagIsUsageErrorExitTwo) {
+  EXPECT_EQ(run(path("MAIN.MPF") + " --no-such-flag").exit_code, 2);
+  EXPECT_EQ(run("").exit_code, 2);
+}
+
+TEST_F(CheckCommand, MaxStepsTurnsAnEndlessLoopIntoAnAlarm) {
+  write("LOOP.MPF", "LOOP\nG1 X1 F100\nENDLOOP\n");
+  const CliRun r = run(path("LOOP.MPF") + " --max-steps 100", true);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("ALARM 990004"), std::string::npos) << r.out;
+}
+
+}  // namespace

@@ -1,0 +1,100 @@
+#include "parser/lexer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "parser/line_error.hpp"
+
+namespace drycut::parser {
+namespace {
+
+std::vector<Token> lex(std::string_view line, Lexer& lexer) {
+  std::vector<Token> t;
+  lexer.tokenize(line, t);
+  return t;
+}
+
+TEST(Lexer, CamBlockTokensWithColumns) {
+  Lexer lx;
+  const auto t = lex("N10 g1 X12.345 Y-6.789 F1500 ; comment", lx);
+  ASSERT_EQ(t.size(), 9u);
+  EXPECT_EQ(t[0].text, "N10");
+  EXPECT_EQ(t[0].column, 1u);
+  EXPECT_EQ(t[1].text, "G1");  // upper-cased
+  EXPECT_EQ(t[1].column, 5u);
+  EXPECT_EQ(t[2].text, "X");
+  EXPECT_EQ(t[2].column, 8u);
+  EXPECT_EQ(t[3].kind, TokenKind::Number);
+  EXPECT_DOUBLE_EQ(t[3].number, 12.345);
+  EXPECT_EQ(t[3].column, 9u);
+  EXPECT_EQ(t[4].text, "Y");
+  EXPECT_EQ(t[5].kind, TokenKind::Minus);
+  EXPECT_EQ(t[5].column, 17u);
+  EXPECT_DOUBLE_EQ(t[6].number, 6.789);
+  EXPECT_EQ(t[7].text, "F1500");
+  EXPECT_EQ(t[8].kind, TokenKind::End);
+}
+
+TEST(Lexer, StringsKeepTheirCase) {
+  Lexer lx;
+  const auto t = lex("t=\"Fr_4\"", lx);
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[0].text, "T");
+  EXPECT_EQ(t[1].kind, TokenKind::Assign);
+  EXPECT_EQ(t[2].kind, TokenKind::String);
+  EXPECT_EQ(t[2].text, "Fr_4");
+  EXPECT_EQ(t[2].column, 3u);
+}
+
+TEST(Lexer, OperatorsAndNumbers) {
+  Lexer lx;
+  const auto t = lex("R1==.5<>5.<=2>=3<4>1 'H1F' 'B101'", lx);
+  std::vector<TokenKind> kinds;
+  for (const auto& k : t) kinds.push_back(k.kind);
+  const std::vector<TokenKind> want{TokenKind::Name,   TokenKind::Equal,     TokenKind::Number,       TokenKind::NotEqual,
+                                    TokenKind::Number, TokenKind::LessEqual, TokenKind::Number,       TokenKind::GreaterEqual,
+                                    TokenKind::Number, TokenKind::Less,      TokenKind::Number,       TokenKind::Greater,
+                                    TokenKind::Number, TokenKind::Number,    TokenKind::Number,       TokenKind::End};
+  EXPECT_EQ(kinds, want);
+  EXPECT_DOUBLE_EQ(t[2].number, 0.5);
+  EXPECT_DOUBLE_EQ(t[4].number, 5.0);
+  EXPECT_DOUBLE_EQ(t[13].number, 31.0);  // 0x1F
+  EXPECT_DOUBLE_EQ(t[14].number, 5.0);   // 0b101
+}
+
+TEST(Lexer, ProgramNameWithExtensionIsOneName) {
+  Lexer lx;
+  const auto t = lex("EKVI_POSTUPNE_45.spf P3", lx);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0].text, "EKVI_POSTUPNE_45.SPF");
+  EXPECT_EQ(t[1].text, "P3");
+}
+
+TEST(Lexer, AmpersandIsASpaceAndCommentEndsTheLine) {
+  Lexer lx;
+  const auto t = lex("G1&X1 ; \"unterminated in a comment is fine", lx);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[1].text, "X1");
+}
+
+TEST(Lexer, ErrorsCarryTheColumn) {
+  Lexer lx;
+  std::vector<Token> t;
+  try {
+    lx.tokenize("G1 X1 # Y", t);
+    FAIL();
+  } catch (const LineError& e) {
+    EXPECT_EQ(e.number(), 12080);
+    EXPECT_EQ(e.column(), 7u);
+  }
+  try {
+    lx.tokenize("MSG(\"abc)", t);
+    FAIL();
+  } catch (const LineError& e) {
+    EXPECT_EQ(e.column(), 5u);
+  }
+  EXPECT_THROW(lx.tokenize(std::string_view("X\0", 2), t), LineError);
+  EXPECT_THROW(lx.tokenize("X=5A", t), LineError);  // name glued to a number
+}
+
+}  // namespace
+}  // namespace drycut::parser

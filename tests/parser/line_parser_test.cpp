@@ -1,0 +1,153 @@
+#include "parser/line_parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include "parser/line_error.hpp"
+
+namespace drycut::parser {
+namespace {
+
+struct Parsed {
+  LineParser parser;
+  ParsedLine line;
+  std::string text;
+  const ParsedLine& operator()(std::string s) {
+    text = std::move(s);
+    parser.parse(text, line);
+    return line;
+  }
+};
+
+TEST(LineParser, BlockNumberSkipLabelAndWords) {
+  Parsed p;
+  const auto& l = p("/3 N20 MARK1: G1 X12.5 Y-3 M3 S1000");
+  EXPECT_EQ(l.skip_level, 3);
+  ASSERT_TRUE(l.number);
+  EXPECT_EQ(*l.number, 20);
+  EXPECT_EQ(l.label, "MARK1");
+  ASSERT_EQ(l.items.size(), 5u);
+  EXPECT_EQ(l.items[0].kind, ItemKind::G);
+  EXPECT_EQ(l.items[0].code, 1);
+  EXPECT_EQ(l.items[1].kind, ItemKind::Address);
+  EXPECT_EQ(l.items[1].name, "X");
+  EXPECT_DOUBLE_EQ(l.pool[l.items[1].expr].value, 12.5);
+  EXPECT_DOUBLE_EQ(l.pool[l.items[2].expr].value, -3.0);
+  EXPECT_EQ(l.items[3].kind, ItemKind::M);
+  EXPECT_EQ(l.items[4].name, "S");
+  EXPECT_DOUBLE_EQ(l.pool[l.items[4].expr].value, 1000.0);
+}
+
+TEST(LineParser, MainBlockNumberAndPlainSkip) {
+  Parsed p;
+  const auto& l = p("/ :100 G0 Z5");
+  EXPECT_EQ(l.skip_level, 0);
+  EXPECT_EQ(*l.number, 100);
+}
+
+TEST(LineParser, ExtendedAddressesAndAssignments) {
+  Parsed p;
+  const auto& l = p("G2 X10 I1=5 CR=-3 AP=45 RP=10 TURN=2 PW=3 X=AC(5) Y=IC(-1) R1=R2*2 R[3]=1");
+  ASSERT_EQ(l.items.size(), 12u);
+  EXPECT_EQ(l.items[2].kind, ItemKind::Assign);
+  EXPECT_EQ(l.items[2].name, "I1");
+  EXPECT_EQ(l.items[3].name, "CR");
+  EXPECT_EQ(l.items[8].name, "X");
+  EXPECT_EQ(l.pool[l.items[8].expr].op, ExprOp::Call);
+  EXPECT_EQ(l.pool[l.items[8].expr].func, Function::AbsoluteMode);
+  EXPECT_EQ(l.pool[l.items[9].expr].func, Function::IncrementalMode);
+  EXPECT_EQ(l.items[10].name, "R1");
+  EXPECT_NE(l.items[11].index, kNoExpr);
+}
+
+TEST(LineParser, ToolNameCommandsAndProcedures) {
+  Parsed p;
+  const auto& l = p("T=\"Fr_4\" D1 ASPLINE BTAN CYCLE832(0.01,1) MSG(\"Hi there\") SPLINEPATH(1,X,Y,Z) G642");
+  ASSERT_EQ(l.items.size(), 8u);
+  EXPECT_EQ(l.items[0].kind, ItemKind::ToolName);
+  EXPECT_EQ(l.items[0].name, "Fr_4");
+  EXPECT_EQ(l.items[1].kind, ItemKind::Address);
+  EXPECT_EQ(l.items[2].kind, ItemKind::Name);
+  EXPECT_EQ(l.items[2].name, "ASPLINE");
+  EXPECT_EQ(l.items[4].kind, ItemKind::Procedure);
+  EXPECT_EQ(l.items[4].arg_count, 2u);
+  EXPECT_EQ(l.items[5].arg_count, 1u);
+  EXPECT_EQ(l.pool[l.pool.args[l.items[5].arg_first]].text, "Hi there");
+  EXPECT_EQ(l.items[6].arg_count, 4u);
+  EXPECT_EQ(l.items[7].kind, ItemKind::G);
+  EXPECT_EQ(l.items[7].code, 642);
+}
+
+TEST(LineParser, CallsAndPasses) {
+  Parsed p;
+  auto l = &p("L123 P3");
+  EXPECT_EQ(l->items[0].kind, ItemKind::LCall);
+  EXPECT_EQ(l->items[0].name, "L123");
+  EXPECT_EQ(l->items[1].kind, ItemKind::Passes);
+  EXPECT_EQ(l->items[1].code, 3);
+  l = &p("CALL \"Sub1\" P2");
+  EXPECT_EQ(l->statement, Statement::Call);
+  EXPECT_EQ(l->call_name, "Sub1");
+  l = &p("M1=3");
+  EXPECT_EQ(l->items[0].kind, ItemKind::M);
+  EXPECT_EQ(l->items[0].extension, 1);
+}
+
+TEST(LineParser, ControlStatements) {
+  Parsed p;
+  EXPECT_EQ(p("IF R1>2").statement, Statement::If);
+  const auto& g = p("IF (R1>2) AND (R2<1) GOTOB N50");
+  EXPECT_EQ(g.statement, Statement::IfGoto);
+  EXPECT_EQ(g.jump, JumpDirection::Backward);
+  EXPECT_EQ(*g.target.number, 50);
+  EXPECT_EQ(p("ELSE").statement, Statement::Else);
+  EXPECT_EQ(p("endif").statement, Statement::EndIf);
+  EXPECT_EQ(p("WHILE R1<3").statement, Statement::While);
+  const auto& f = p("FOR I=1 TO 10");
+  EXPECT_EQ(f.statement, Statement::For);
+  EXPECT_EQ(f.for_variable, "I");
+  EXPECT_EQ(p("REPEAT").statement, Statement::Repeat);
+  EXPECT_EQ(p("UNTIL R1==3").statement, Statement::Until);
+  EXPECT_EQ(p("LOOP").statement, Statement::Loop);
+  EXPECT_EQ(p("ENDLOOP").statement, Statement::EndLoop);
+  const auto& j = p("GOTOF ende");
+  EXPECT_EQ(j.statement, Statement::Goto);
+  EXPECT_EQ(j.target.label, "ENDE");
+  EXPECT_EQ(p("GOTOC X1").jump, JumpDirection::NoAlarm);
+  EXPECT_EQ(p("GOTO X1").jump, JumpDirection::ForwardThenBackward);
+  const auto& d = p("DEF REAL A=1, B, C=2*3");
+  EXPECT_EQ(d.statement, Statement::Def);
+  EXPECT_EQ(d.def_type, "REAL");
+  EXPECT_EQ(d.defs.size(), 3u);
+  EXPECT_EQ(p("DEF STRING[16] S=\"x\"").def_type, "STRING");
+  const auto& pr = p("PROC CONTOUR(REAL DEPTH, INT N) SAVE");
+  EXPECT_EQ(pr.statement, Statement::Proc);
+  EXPECT_EQ(pr.defs.size(), 2u);
+}
+
+int error_of(const std::string& s) {
+  Parsed p;
+  try {
+    p(s);
+  } catch (const LineError& e) {
+    return e.number();
+  }
+  return 0;
+}
+
+TEST(LineParser, SyntaxErrors) {
+  EXPECT_EQ(error_of("X=(1+2"), 12080);
+  EXPECT_EQ(error_of("X=1)"), 12080);
+  EXPECT_EQ(error_of("CYCLE832(1,2"), 12080);
+  EXPECT_EQ(error_of("G1 N10"), 12080);
+  EXPECT_EQ(error_of("R5"), 12080);
+  EXPECT_EQ(error_of("/10 X1"), 14060);
+  EXPECT_EQ(error_of("M1: WHILE 1"), 12630);
+  EXPECT_EQ(error_of("/ IF 1"), 12630);
+  EXPECT_EQ(error_of("FOR R1=1"), 12080);
+  EXPECT_EQ(error_of("DEF FOO X"), 12080);
+  EXPECT_EQ(error_of("ENDIF X1"), 12080);
+  EXPECT_EQ(error_of("G1.5"), 12080);
+}
+
+}  // namespace
+}  // namespace drycut::parser
