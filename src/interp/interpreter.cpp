@@ -538,9 +538,18 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
     if (pl->value <= 0) raise(ctx, 12160, "PL must be > 0", pl->column);
     knot_span = pl->value * (state_.inch ? kMmPerInch : 1.0);
   }
-  spline_.add(target, weight, knot_span, std::move(e));
+  try {
+    spline_.add(target, weight, knot_span, std::move(e));
+    spline_.drain(sink_);
+  } catch (const AlarmError& error) {
+    // The geometry knows what is wrong but not where: give the alarm this block's location.
+    if (!error.alarm().where.file.empty()) throw;
+    Alarm located = error.alarm();
+    located.where = {ctx.ref.file_name(), ctx.ref.line, 0};
+    located.block = ctx.ref.text;
+    throw AlarmError(std::move(located));
+  }
   position_ = target;
-  spline_.drain(sink_);
   if (spline_.has_last_tangent()) {
     last_tangent_ = spline_.last_tangent();
     has_last_tangent_ = true;

@@ -140,3 +140,16 @@ TEST(InterpreterSplines, QuotaIsNotJudgedAfterTheLastPointOfARun) {
 
 }  // namespace
 }  // namespace drycut::interp::testing
+
+namespace drycut::interp::testing {
+namespace {
+
+TEST(InterpreterSplines, BadWeightIsAnAlarmAtItsBlock) {
+  auto r = run_program("G0 X0 Y0 Z0\nG1 F600\nBSPLINE\nX1 Y1 PW=4\nX2 Y0\nM30\n");
+  ASSERT_TRUE(r->alarm);
+  EXPECT_EQ(r->alarm->number, 12160);
+  EXPECT_EQ(r->alarm->where.line, 4u);
+}
+
+}  // namespace
+}  // namespace drycut::interp::testing

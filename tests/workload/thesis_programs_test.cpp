@@ -16,7 +16,13 @@ size_t count_lines_with(const std::string& text, const std::string& needle) {
   return n;
 }
 
-size_t count_blocks(const std::string& text) { return count_lines_with(text, "N"); }
+size_t count_blocks(const std::string& text) {
+  std::istringstream in(text);
+  size_t n = 0;
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] == 'N') ++n;
+  return n;
+}
 
 const ThesisProgram& find(const std::vector<ThesisProgram>& all, const std::string& main_file) {
   auto it = std::find_if(all.begin(), all.end(), [&](const auto& p) { return p.main.file_name == main_file; });
