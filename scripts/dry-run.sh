@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-./build/drycut check programs/examples/pocket.mpf
+./build/drycut experiment

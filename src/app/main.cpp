@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
   drycut::app::register_check(app);
   drycut::app::register_path(app);
   drycut::app::register_run(app);
+  drycut::app::register_report(app);
+  drycut::app::register_compare(app);
+  drycut::app::register_experiment(app);
   drycut::app::register_generate(app);
 
   try {

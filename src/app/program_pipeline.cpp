@@ -5,6 +5,7 @@
 #include "app/exit_code.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/program_loader.hpp"
+#include "report/progress_display.hpp"
 
 namespace drycut::app {
 
@@ -41,7 +42,10 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
   interp::Interpreter interpreter(profile, sink, outcome.diagnostics);
   parser::Block block;
   try {
+    // Progress on stderr for long runs, only on a terminal and without --quiet.
+    auto progress = report::ProgressDisplay::for_stderr(options.quiet);
     while (loader.next(block)) {
+      progress.update(loader.blocks_executed());
       interpreter.execute(block);
       if (interpreter.ended()) break;
     }

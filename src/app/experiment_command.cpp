@@ -1,0 +1,186 @@
+// `drycut experiment`: the reference experiment in one command. Writes its 24 3-D finishing
+// programs, dry-runs each on the machine profile and sets the predicted time after M0 and lowest
+// feed beside the times and feeds measured on the real machine (programs/thesis/measured_equidistant.json,
+// embedded). The polar programs' measurements are withheld: their predictions are printed alone.
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/exit_code.hpp"
+#include "app/program_pipeline.hpp"
+#include "interp/cutter_compensation.hpp"
+#include "measured_equidistant_json.hpp"
+#include "motion/planner.hpp"
+#include "workload/thesis_programs.hpp"
+
+namespace drycut::app {
+namespace {
+
+struct ExperimentOptions {
+  std::string machine_file;
+  std::string json_file;
+  std::string keep_dir;  // write the programs here instead of a temporary folder
+};
+
+struct Row {
+  std::string set;
+  std::string method;
+  size_t knots = 0;
+  double time_after_m0_s = 0;
+  double time_s = 0;
+  double min_feed_mm_min = 0;
+  size_t dips = 0;
+  size_t warnings = 0;
+  std::string alarm;  // first alarm, empty when clean
+  bool measured = false;
+  double measured_time_s = 0;
+  double measured_min_feed = 0;
+};
+
+struct Measurement {
+  double time_s;
+  double min_feed;
+};
+
+std::map<std::pair<int, std::string>, Measurement> measurements() {
+  std::map<std::pair<int, std::string>, Measurement> out;
+  const auto data = nlohmann::json::parse(kMeasuredEquidistantJson);
+  for (const auto& run : data.at("runs"))
+    out[{run.at("per_quadrant").get<int>(), run.at("method").get<std::string>()}] = {run.at("time").get<double>(),
+                                                                                      run.at("min_feed").get<double>()};
+  return out;
+}
+
+Row run_one(const workload::ThesisProgram& p, const std::filesystem::path& dir, const machine::MachineProfile& profile) {
+  Row row;
+  row.set = p.set.id;
+  row.method = workload::method_name(p.method);
+  row.knots = workload::thesis_knots(p.set).size() + 1;  // the closing knot, as the experiment counts
+  ProgramOptions options;
+  options.program = (dir / p.main.file_name).string();
+  options.quiet = true;
+  motion::PlanObserver none;
+  motion::Planner planner(profile, none);
+  Diagnostics compensation_diagnostics;
+  interp::CutterCompensation compensation(planner, profile, compensation_diagnostics);
+  PipelineOutcome outcome = run_program(options, profile, compensation);
+  for (const auto& a : outcome.diagnostics.items())
+    if (a.severity == Severity::Alarm && row.alarm.empty()) row.alarm = a.format();
+  row.warnings = outcome.diagnostics.warning_count() + compensation_diagnostics.warning_count();
+  const auto& s = planner.summary();
+  row.time_s = s.time_s;
+  row.time_after_m0_s = s.time_after_m0_s;
+  row.min_feed_mm_min = s.min_feed_mm_s * 60.0;
+  row.dips = s.dips.size() + s.dips_not_listed;
+  return row;
+}
+
+int run_experiment(const ExperimentOptions& o) {
+  ProgramOptions machine_options;
+  machine_options.machine_file = o.machine_file;
+  const machine::MachineProfile profile = load_machine(machine_options);
+  std::filesystem::path dir = o.keep_dir;
+  const bool temporary = dir.empty();
+  if (temporary) dir = std::filesystem::temp_directory_path() / ("drycut-experiment-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::vector<workload::ThesisProgram> programs;
+  for (auto& p : workload::thesis_programs()) {
+    if (p.mode != workload::MillingMode::Progressive3D) continue;
+    std::ofstream(dir / p.main.file_name, std::ios::binary) << p.main.text;
+    std::ofstream(dir / p.sub.file_name, std::ios::binary) << p.sub.text;
+    programs.push_back(std::move(p));
+  }
+  const auto measured = measurements();
+  std::vector<Row> rows;
+  for (const auto& p : programs) {
+    Row row = run_one(p, dir, profile);
+    if (p.set.equidistant) {
+      auto it = measured.find({p.set.value, row.method});
+      if (it != measured.end()) {
+        row.measured = true;
+        row.measured_time_s = it->second.time_s;
+        row.measured_min_feed = it->second.min_feed;
+      }
+    }
+    rows.push_back(std::move(row));
+  }
+  if (temporary) std::filesystem::remove_all(dir);
+
+  std::printf("Reference experiment on %s: time after M0 and lowest feed, predicted vs measured\n\n", profile.name.c_str());
+  std::printf("%-9s %-8s %5s  %9s %9s %7s  %9s %9s %6s  %s\n", "set", "method", "knots", "pred_s", "meas_s", "err%",
+              "pred_feed", "meas_feed", "ratio", "notes");
+  double sum_err = 0, sum_abs = 0;
+  int n = 0, within10 = 0, feed_ok = 0, alarms = 0;
+  for (const Row& r : rows) {
+    std::string notes = r.alarm.empty() ? "" : "ALARM";
+    if (!r.alarm.empty()) ++alarms;
+    if (r.measured) {
+      const double err = 100.0 * (r.time_after_m0_s - r.measured_time_s) / r.measured_time_s;
+      const double ratio = r.min_feed_mm_min / r.measured_min_feed;
+      sum_err += err;
+      sum_abs += std::abs(err);
+      ++n;
+      within10 += std::abs(err) <= 10.0;
+      feed_ok += ratio >= 1 / 1.5 && ratio <= 1.5;
+      std::printf("%-9s %-8s %5zu  %9.2f %9.2f %+6.1f%%  %9.0f %9.0f %6.2f  %s\n", r.set.c_str(), r.method.c_str(),
+                  r.knots, r.time_after_m0_s, r.measured_time_s, err, r.min_feed_mm_min, r.measured_min_feed, ratio,
+                  notes.c_str());
+    } else {
+      std::printf("%-9s %-8s %5zu  %9.2f %9s %7s  %9.0f %9s %6s  %s\n", r.set.c_str(), r.method.c_str(), r.knots,
+                  r.time_after_m0_s, "-", "", r.min_feed_mm_min, "-", "", notes.c_str());
+    }
+  }
+  if (n > 0)
+    std::printf("\nmeasured programs: %d; mean error %+.1f %%, mean |error| %.1f %%, within ±10 %%: %d, lowest feed within ×1.5: %d\n",
+                n, sum_err / n, sum_abs / n, within10, feed_ok);
+  for (const Row& r : rows)
+    if (!r.alarm.empty()) std::fprintf(stderr, "%s\n", r.alarm.c_str());
+
+  if (!o.json_file.empty()) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const Row& r : rows) {
+      nlohmann::json row{{"set", r.set},          {"method", r.method},
+                         {"knots", r.knots},      {"time_s", r.time_s},
+                         {"time_after_m0_s", r.time_after_m0_s}, {"min_feed_mm_min", r.min_feed_mm_min},
+                         {"dips", r.dips},        {"warnings", r.warnings},
+                         {"alarm", r.alarm}};
+      if (r.measured) {
+        row["measured_time_s"] = r.measured_time_s;
+        row["measured_min_feed_mm_min"] = r.measured_min_feed;
+      }
+      j.push_back(row);
+    }
+    std::ofstream out(o.json_file);
+    if (!out) throw UsageError("cannot write " + o.json_file);
+    out << nlohmann::json{{"machine", profile.name}, {"programs", j}}.dump(2) << "\n";
+  }
+  return alarms ? kExitAlarm : kExitOk;
+}
+
+}  // namespace
+
+void register_experiment(CLI::App& app) {
+  auto o = std::make_shared<ExperimentOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "experiment", "Dry-run the reference experiment's 24 programs and compare with the measured times");
+  cmd->add_option("--machine", o->machine_file, "Machine profile JSON (default: the embedded MCV 1210)");
+  cmd->add_option("--json", o->json_file, "Write the table as JSON");
+  cmd->add_option("--keep", o->keep_dir, "Write the programs into this folder and keep them");
+  cmd->callback([o] {
+    try {
+      throw ExitRequest{run_experiment(*o)};
+    } catch (const UsageError& e) {
+      std::fprintf(stderr, "drycut experiment: %s\n", e.what());
+      throw ExitRequest{kExitUsage};
+    }
+  });
+}
+
+}  // namespace drycut::app
