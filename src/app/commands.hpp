@@ -10,6 +10,8 @@ void register_check(CLI::App& app);
 void register_path(CLI::App& app);
 void register_generate(CLI::App& app);
 void register_run(CLI::App& app);
+void register_deviation(CLI::App& app);
+void register_sweep(CLI::App& app);
 void register_report(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_experiment(CLI::App& app);

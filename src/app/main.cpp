@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
   drycut::app::register_compare(app);
   drycut::app::register_experiment(app);
   drycut::app::register_generate(app);
+  drycut::app::register_deviation(app);
+  drycut::app::register_sweep(app);
 
   try {
     app.parse(argc, argv);

@@ -85,5 +85,7 @@ MachineProfile load_profile_json(const std::string& json_text, const std::string
 MachineProfile load_profile_file(const std::string& path);
 // The embedded TAJMAC-ZPS MCV 1210 profile.
 const MachineProfile& default_profile();
+// The profile as JSON in the canonical units (load_profile_json reads it back unchanged).
+std::string profile_to_json(const MachineProfile& profile);
 
 }  // namespace drycut::machine

@@ -1,0 +1,96 @@
+// `drycut deviation PROGRAM [curve options] [--json FILE] [--control-points CSV]`: how far the
+// interpolated programmed contour and the surface the tool cuts are from the reference curve.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include "app/commands.hpp"
+#include "app/curve_options.hpp"
+#include "app/exit_code.hpp"
+#include "app/program_pipeline.hpp"
+#include "workload/deviation_program_run.hpp"
+#include "workload/deviation_report.hpp"
+
+namespace drycut::app {
+namespace {
+
+struct DeviationOptions {
+  ProgramOptions program;
+  CurveOptions curve;
+  std::string json_file;
+  std::string control_points_csv;
+  double step_mm = 0.01;
+  double capture_mm = 0.5;
+};
+
+int run_deviation(const DeviationOptions& o) {
+  const machine::MachineProfile profile = load_machine(o.program);
+  const workload::CurveSource curve = make_curve(o.curve);
+  const workload::ReferenceContour reference(curve);
+  std::vector<workload::ControlPoint> control_points;
+  if (!o.control_points_csv.empty()) control_points = workload::read_control_points(o.control_points_csv);
+  else if (o.curve.points_csv.empty()) control_points = workload::thesis_control_points(curve);
+
+  workload::SampleOptions sample_options;
+  for (const auto& dir : o.program.search_path) sample_options.search_path.emplace_back(dir);
+  sample_options.step_mm = o.step_mm;
+  sample_options.max_steps = o.program.max_steps;
+  const workload::SampledProgram sampled = workload::sample_program(o.program.program, profile, sample_options);
+  const workload::ContourSplit split = workload::split_contour(sampled, reference, o.capture_mm);
+  const workload::DeviationReport report = workload::evaluate_deviation(split, reference, control_points);
+
+  std::fputs(workload::format_table(report).c_str(), stdout);
+  if (sampled.compensation_alarm)
+    std::printf("tool-centre path stopped by the compensation: %s\n", sampled.compensation_alarm->format().c_str());
+  if (!o.json_file.empty()) {
+    nlohmann::json j = workload::to_json(report);
+    j["program"] = o.program.program;
+    j["sample_step_mm"] = o.step_mm;
+    j["alarms"] = nlohmann::json::array();
+    for (const auto* a : {&sampled.program_alarm, &sampled.compensation_alarm})
+      if (*a) j["alarms"].push_back((*a)->format());
+    std::ofstream out(o.json_file);
+    if (!out) throw UsageError("cannot write " + o.json_file);
+    out << j.dump(2) << "\n";
+  }
+  if (sampled.program_alarm) {
+    std::fprintf(stderr, "%s\n", sampled.program_alarm->format().c_str());
+    return kExitAlarm;
+  }
+  if (split.passes.empty()) {
+    std::fprintf(stderr, "drycut deviation: no contour found (no feed move starts and ends within %.3g mm of the curve)\n",
+                 o.capture_mm);
+    return kExitAlarm;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void register_deviation(CLI::App& app) {
+  auto o = std::make_shared<DeviationOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "deviation", "Deviation of the programmed and the cut contour from the reference curve (per loop, control points)");
+  add_program_options(*cmd, o->program);
+  add_curve_options(*cmd, o->curve);
+  cmd->add_option("--json", o->json_file, "Write the report as JSON");
+  cmd->add_option("--control-points", o->control_points_csv,
+                  "CSV x,y[,hold x|y] of control points (default: the thesis's 11 points in the second quadrant)");
+  cmd->add_option("--step", o->step_mm, "Sample spacing along the path in mm")->default_val(0.01)->check(CLI::PositiveNumber);
+  cmd->add_option("--capture", o->capture_mm, "A feed move belongs to the contour when both its ends are this close to the curve (mm)")
+      ->default_val(0.5)
+      ->check(CLI::PositiveNumber);
+  cmd->callback([o] {
+    try {
+      throw ExitRequest{run_deviation(*o)};
+    } catch (const UsageError& e) {
+      std::fprintf(stderr, "drycut deviation: %s\n", e.what());
+      throw ExitRequest{kExitUsage};
+    } catch (const AlarmError& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      throw ExitRequest{kExitAlarm};
+    }
+  });
+}
+
+}  // namespace drycut::app

@@ -1,0 +1,255 @@
+#include "machine/machine_profile.hpp"
+
+#include <algorithm>
+#include <array>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "default_profile_json.hpp"
+#include "machine/profile_object_reader.hpp"
+
+namespace drycut::machine {
+namespace {
+
+using nlohmann::json;
+constexpr std::array<const char*, 3> kAxisNames{"X", "Y", "Z"};
+
+double required_quantity(ProfileObjectReader& r, const std::string& name, Dimension d) {
+  auto v = r.quantity(name, d);
+  if (!v)
+    throw ProfileError(r.key_path(name) + ": missing (write it as " + name + "_<unit>, unit one of " +
+                       std::string(unit_list(d)) + ")");
+  return *v;
+}
+
+AxisData read_axis(const json& node, const std::string& path, const std::string& name) {
+  ProfileObjectReader r(node, path);
+  AxisData a;
+  a.name = name;
+  if (auto v = r.quantity("min", Dimension::Length)) a.min_mm = *v;
+  if (auto v = r.quantity("max", Dimension::Length)) a.max_mm = *v;
+  a.max_velocity_mm_s = require_positive(required_quantity(r, "max_velocity", Dimension::Velocity),
+                                         r.key_path("max_velocity"));
+  a.max_accel_mm_s2 = require_positive(required_quantity(r, "max_accel", Dimension::Acceleration),
+                                       r.key_path("max_accel"));
+  a.max_jerk_mm_s3 = require_positive(required_quantity(r, "max_jerk", Dimension::Jerk),
+                                      r.key_path("max_jerk"));
+  r.reject_unknown_keys();
+  if (!(a.min_mm < a.max_mm)) throw ProfileError(path + ".min: must be < max (software limit range)");
+  return a;
+}
+
+void read_axes(const json& node, MachineProfile& p) {
+  ProfileObjectReader r(node, "axes");
+  for (size_t i = 0; i < kAxisNames.size(); ++i) {
+    const json* axis = r.child(kAxisNames[i]);
+    if (!axis) r.fail(kAxisNames[i], "missing (axes X, Y and Z are required)");
+    p.axes[i] = read_axis(*axis, r.key_path(kAxisNames[i]), kAxisNames[i]);
+  }
+  r.reject_unknown_keys();
+}
+
+void read_path(const json& node, MachineProfile& p) {
+  ProfileObjectReader r(node, "path");
+  bool jerk_given = false;
+  if (auto v = r.quantity("ipo_cycle", Dimension::Time))
+    p.ipo_cycle_s = require_positive(*v, r.key_path("ipo_cycle"));
+  if (auto v = r.number("max_accel_ovl_factor"))
+    p.max_accel_ovl_factor = require_range(*v, 1.0, 10.0, r.key_path("max_accel_ovl_factor"));
+  if (auto v = r.quantity("max_path_jerk", Dimension::Jerk)) {
+    p.path_jerk_mm_s3 = require_positive(*v, r.key_path("max_path_jerk"));
+    jerk_given = true;
+  }
+  if (auto v = r.number("soft_accel_factor"))
+    p.soft_accel_factor = require_positive(*v, r.key_path("soft_accel_factor"));
+  if (auto v = r.number("curv_effect_on_path_accel"))
+    p.curv_effect_on_path_accel = require_range(*v, 0.0, 0.95, r.key_path("curv_effect_on_path_accel"));
+  if (auto v = r.integer("lookahead_blocks")) {
+    if (*v < 1 || *v > 100000) r.fail("lookahead_blocks", "must be in [1, 100000]");
+    p.lookahead_blocks = static_cast<int>(*v);
+  }
+  if (auto v = r.number("short_block_factor"))
+    p.short_block_factor = require_range(*v, 1e-6, 10.0, r.key_path("short_block_factor"));
+  if (auto v = r.number("g0_accel_factor"))
+    p.g0_accel_factor = require_positive(*v, r.key_path("g0_accel_factor"));
+  if (auto v = r.number("g0_jerk_factor"))
+    p.g0_jerk_factor = require_positive(*v, r.key_path("g0_jerk_factor"));
+  if (auto v = r.quantity("tool_change_time", Dimension::Time))
+    p.tool_change_time_s = require_non_negative(*v, r.key_path("tool_change_time"));
+  r.reject_unknown_keys();
+  if (!jerk_given) {
+    // No path jerk given: the smallest axis jerk is the safe stand-in.
+    p.path_jerk_mm_s3 = std::min({p.axes[0].max_jerk_mm_s3, p.axes[1].max_jerk_mm_s3, p.axes[2].max_jerk_mm_s3});
+  }
+}
+
+void read_program(const json& node, MachineProfile& p) {
+  ProfileObjectReader r(node, "program");
+  if (const json* codes = r.child("reset_gcodes")) {
+    if (!codes->is_array()) r.fail("reset_gcodes", "must be an array of strings");
+    p.reset_gcodes.clear();
+    for (const auto& c : *codes) {
+      if (!c.is_string() || c.get<std::string>().empty())
+        r.fail("reset_gcodes", "must be an array of non-empty strings");
+      p.reset_gcodes.push_back(c.get<std::string>());
+    }
+  }
+  if (const json* offsets = r.child("work_offsets_mm")) {
+    ProfileObjectReader o(*offsets, r.key_path("work_offsets_mm"));
+    // Settable frames: G54..G57 and G505..G599.
+    static const std::regex kOffsetName("G5[4-7]|G5(0[5-9]|[1-9][0-9])");
+    for (auto it = offsets->begin(); it != offsets->end(); ++it) {
+      if (!std::regex_match(it.key(), kOffsetName)) o.fail(it.key(), "not a settable work offset (G54..G57, G505..G599)");
+      const json& v = it.value();
+      if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+        o.fail(it.key(), "must be an array of 3 numbers [x, y, z]");
+      p.work_offsets[it.key()] = Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+    }
+  }
+  if (auto v = r.vector3("start_position", Dimension::Length)) p.start_position = *v;
+  if (auto v = r.quantity("circle_error_const", Dimension::Length))
+    p.circle_error_const_mm = require_positive(*v, r.key_path("circle_error_const"));
+  if (auto v = r.number("circle_error_factor"))
+    p.circle_error_factor = require_non_negative(*v, r.key_path("circle_error_factor"));
+  auto positive_int = [&](const char* key, int& field) {
+    if (auto v = r.integer(key)) {
+      if (*v < 1 || *v > 1000000) r.fail(key, "must be in [1, 1000000]");
+      field = static_cast<int>(*v);
+    }
+  };
+  positive_int("cubic_spline_blocks", p.cubic_spline_blocks);
+  if (auto v = r.boolean("cubic_spline_global")) p.cubic_spline_global = *v;
+  positive_int("cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks);
+  positive_int("cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks);
+  r.reject_unknown_keys();
+}
+
+ToolEdge read_edge(const json& node, const std::string& path) {
+  ProfileObjectReader r(node, path);
+  ToolEdge e;
+  auto d = r.integer("d");
+  if (!d) r.fail("d", "missing");
+  if (*d < 1 || *d > 12) r.fail("d", "must be in [1, 12]");
+  e.d = static_cast<int>(*d);
+  if (auto v = r.quantity("radius", Dimension::Length)) e.radius_mm = require_non_negative(*v, r.key_path("radius"));
+  if (auto v = r.quantity("length", Dimension::Length)) e.length_mm = *v;
+  r.reject_unknown_keys();
+  return e;
+}
+
+void read_tools(const json& node, MachineProfile& p) {
+  if (!node.is_array()) throw ProfileError("tools: must be an array");
+  p.tools.clear();
+  for (size_t i = 0; i < node.size(); ++i) {
+    std::string path = "tools[" + std::to_string(i) + "]";
+    ProfileObjectReader r(node[i], path);
+    Tool t;
+    auto name = r.string("name");
+    if (!name || name->empty()) r.fail("name", "missing or empty");
+    t.name = *name;
+    auto number = r.integer("number");
+    if (!number) r.fail("number", "missing");
+    if (*number < 0 || *number > 32000) r.fail("number", "must be in [0, 32000]");
+    t.number = static_cast<int>(*number);
+    if (const json* edges = r.child("edges")) {
+      if (!edges->is_array()) r.fail("edges", "must be an array");
+      for (size_t k = 0; k < edges->size(); ++k)
+        t.edges.push_back(read_edge((*edges)[k], r.key_path("edges") + "[" + std::to_string(k) + "]"));
+    }
+    r.reject_unknown_keys();
+    if (p.find_tool(t.name)) r.fail("name", "tool '" + t.name + "' defined twice");
+    p.tools.push_back(std::move(t));
+  }
+}
+
+}  // namespace
+
+MachineProfile load_profile_json(const std::string& json_text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw ProfileError(origin + ": not valid JSON: " + e.what());
+  }
+  try {
+    MachineProfile p;
+    ProfileObjectReader r(root, "");
+    if (auto name = r.string("name")) p.name = *name;
+    const json* axes = r.child("axes");
+    if (!axes) r.fail("axes", "missing");
+    read_axes(*axes, p);
+    if (const json* path = r.child("path")) {
+      read_path(*path, p);
+    } else {
+      read_path(json::object(), p);
+    }
+    if (const json* program = r.child("program")) read_program(*program, p);
+    if (const json* tools = r.child("tools")) read_tools(*tools, p);
+    r.reject_unknown_keys();
+    return p;
+  } catch (const ProfileError& e) {
+    throw ProfileError(origin + ": " + e.what());
+  }
+}
+
+MachineProfile load_profile_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ProfileError(path + ": machine profile file cannot be opened");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return load_profile_json(text.str(), path);
+}
+
+const MachineProfile& default_profile() {
+  // Parsed once; the embedded text is validated by the same loader as any user file.
+  static const MachineProfile profile = load_profile_json(kDefaultProfileJson, "<embedded mcv1210.json>");
+  return profile;
+}
+
+std::string profile_to_json(const MachineProfile& p) {
+  json root;
+  root["name"] = p.name;
+  json axes = json::object();
+  for (const auto& a : p.axes) {
+    axes[a.name] = {{"min_mm", a.min_mm},
+                    {"max_mm", a.max_mm},
+                    {"max_velocity_mm_min", a.max_velocity_mm_s * 60.0},
+                    {"max_accel_m_s2", a.max_accel_mm_s2 / 1000.0},
+                    {"max_jerk_m_s3", a.max_jerk_mm_s3 / 1000.0}};
+  }
+  root["axes"] = axes;
+  root["path"] = {{"ipo_cycle_ms", p.ipo_cycle_s * 1000.0},
+                  {"max_accel_ovl_factor", p.max_accel_ovl_factor},
+                  {"max_path_jerk_m_s3", p.path_jerk_mm_s3 / 1000.0},
+                  {"soft_accel_factor", p.soft_accel_factor},
+                  {"curv_effect_on_path_accel", p.curv_effect_on_path_accel},
+                  {"lookahead_blocks", p.lookahead_blocks},
+                  {"short_block_factor", p.short_block_factor},
+                  {"g0_accel_factor", p.g0_accel_factor},
+                  {"g0_jerk_factor", p.g0_jerk_factor},
+                  {"tool_change_time_s", p.tool_change_time_s}};
+  json offsets = json::object();
+  for (const auto& [name, v] : p.work_offsets) offsets[name] = {v.x(), v.y(), v.z()};
+  root["program"] = {{"reset_gcodes", p.reset_gcodes},
+                     {"work_offsets_mm", offsets},
+                     {"start_position_mm", {p.start_position.x(), p.start_position.y(), p.start_position.z()}},
+                     {"circle_error_const_mm", p.circle_error_const_mm},
+                     {"circle_error_factor", p.circle_error_factor},
+                     {"cubic_spline_blocks", p.cubic_spline_blocks},
+                     {"cubic_spline_global", p.cubic_spline_global},
+                     {"cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks},
+                     {"cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks}};
+  json tools = json::array();
+  for (const auto& t : p.tools) {
+    json edges = json::array();
+    for (const auto& e : t.edges) edges.push_back({{"d", e.d}, {"radius_mm", e.radius_mm}, {"length_mm", e.length_mm}});
+    tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});
+  }
+  root["tools"] = tools;
+  return root.dump(2);
+}
+
+}  // namespace drycut::machine

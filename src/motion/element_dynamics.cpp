@@ -1,0 +1,49 @@
+#include "motion/element_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace drycut::motion {
+
+ElementDynamics make_element_dynamics(const interp::PathElement& element, double length,
+                                      const machine::MachineProfile& profile) {
+  ElementDynamics d;
+  d.length = length;
+  d.rapid = element.rapid;
+  d.feed = element.rapid ? 0.0 : element.feed_mm_s;
+  d.soft = element.dynamics.profile == interp::AccelProfile::Soft;
+  const double accel_factor = element.rapid ? profile.g0_accel_factor : (d.soft ? profile.soft_accel_factor : 1.0);
+  const double jerk_factor = element.rapid ? profile.g0_jerk_factor : 1.0;
+  for (int i = 0; i < 3; ++i) {
+    const auto& axis = profile.axes[static_cast<size_t>(i)];
+    d.axis_velocity[i] = axis.max_velocity_mm_s;
+    d.raw_axis_accel[i] = axis.max_accel_mm_s2;
+    d.axis_accel[i] = axis.max_accel_mm_s2 * accel_factor;
+    d.axis_jerk[i] = axis.max_jerk_mm_s3 * jerk_factor;
+  }
+  d.path_jerk = profile.path_jerk_mm_s3 * jerk_factor;
+  d.centripetal_share = profile.curv_effect_on_path_accel;
+  d.ipo_cycle = profile.ipo_cycle_s;
+  d.short_block_factor = profile.short_block_factor;
+  d.ovl_factor = profile.max_accel_ovl_factor;
+  return d;
+}
+
+RampLimits tangential_limits(const ElementDynamics& d, const CurvePoint& point) {
+  // A straight point keeps the whole axis acceleration for the path; a curved one keeps the
+  // centripetal share in reserve (with share 0 nothing is reserved, as on the control).
+  const bool curved = point.curvature > 1e-12;
+  const double keep = curved ? 1.0 - d.centripetal_share : 1.0;
+  double accel = std::numeric_limits<double>::infinity();
+  double jerk = d.soft ? d.path_jerk : kNoJerkLimit;
+  for (int i = 0; i < 3; ++i) {
+    const double t = std::abs(point.tangent[i]);
+    if (t < 1e-12) continue;
+    accel = std::min(accel, keep * d.axis_accel[i] / t);
+    if (d.soft) jerk = std::min(jerk, d.axis_jerk[i] / t);
+  }
+  if (!std::isfinite(accel)) accel = keep * d.axis_accel.minCoeff();
+  return {accel, jerk};
+}
+
+}  // namespace drycut::motion

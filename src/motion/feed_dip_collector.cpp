@@ -1,0 +1,37 @@
+#include "motion/feed_dip_collector.hpp"
+
+namespace drycut::motion {
+
+void FeedDipCollector::add(const BlockRef& source, double programmed_feed, double v_min, Limit limit) {
+  if (!(v_min < threshold_ * programmed_feed)) {
+    interrupt();
+    return;
+  }
+  if (open_) {
+    if (open_listed_) {
+      FeedDip& dip = dips_.back();
+      ++dip.element_count;
+      if (v_min < dip.v_min_mm_s) {
+        dip.v_min_mm_s = v_min;
+        dip.min_source = source;
+        dip.programmed_feed_mm_s = programmed_feed;
+        dip.limit = limit;
+      }
+    }
+    return;
+  }
+  open_ = true;
+  open_listed_ = dips_.size() < max_dips_;
+  if (!open_listed_) {
+    ++not_listed_;
+    return;
+  }
+  dips_.push_back(FeedDip{source, source, v_min, programmed_feed, limit, 1});
+}
+
+void FeedDipCollector::interrupt() {
+  open_ = false;
+  open_listed_ = false;
+}
+
+}  // namespace drycut::motion

@@ -1,0 +1,33 @@
+#pragma once
+// Collects feed dips: consecutive cutting elements whose velocity fell below a share of their
+// programmed F merge into one dip; at most `max_dips` are kept, the rest are only counted, so
+// memory stays bounded for any program length.
+#include <optional>
+#include <vector>
+
+#include "motion/plan_result.hpp"
+
+namespace drycut::motion {
+
+class FeedDipCollector {
+ public:
+  FeedDipCollector(double threshold, size_t max_dips) : threshold_(threshold), max_dips_(max_dips) {}
+
+  // A committed cutting element; v_min is its lowest velocity outside planned standstills.
+  void add(const BlockRef& source, double programmed_feed, double v_min, Limit limit);
+  // Anything that is not cutting (rapid, dwell, stop) ends the current stretch.
+  void interrupt();
+
+  const std::vector<FeedDip>& dips() const { return dips_; }
+  size_t not_listed() const { return not_listed_; }
+
+ private:
+  double threshold_;
+  size_t max_dips_;
+  std::vector<FeedDip> dips_;
+  size_t not_listed_ = 0;
+  bool open_ = false;        // the last element dipped
+  bool open_listed_ = false; // ... and its dip is in dips_
+};
+
+}  // namespace drycut::motion

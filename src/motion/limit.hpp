@@ -1,0 +1,12 @@
+#pragma once
+// Which constraint bounds the path velocity at a point.
+#include <string_view>
+
+namespace drycut::motion {
+
+enum class Limit { Feed, Curvature, Jerk, Corner, ShortBlock, Lookahead, ExactStop, Axis };
+
+// "feed", "curvature", "jerk", "corner", "short_block", "lookahead", "exact_stop", "axis"
+std::string_view to_string(Limit limit);
+
+}  // namespace drycut::motion

@@ -1,0 +1,410 @@
+#include "motion/planner.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "machine/alarm.hpp"
+
+namespace drycut::motion {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kMaxSegmentsPerElement = 20000;
+
+SourceLocation location_of(const BlockRef& ref) { return SourceLocation{ref.file_name(), ref.line, 0}; }
+
+[[noreturn]] void raise(int number, const std::string& detail, const interp::PathElement& e) {
+  throw AlarmError(make_alarm(number, detail, location_of(e.source), e.source.text));
+}
+
+RampLimits min_limits(RampLimits a, RampLimits b) {
+  return {std::min(a.accel, b.accel), std::min(a.jerk, b.jerk)};
+}
+
+}  // namespace
+
+Planner::Planner(const machine::MachineProfile& profile, PlanObserver& observer, PlannerOptions options)
+    : profile_(profile),
+      observer_(observer),
+      options_(options),
+      point_constraints_(default_point_constraints()),
+      junction_constraints_(default_junction_constraints()),
+      dips_(options.dip_threshold, options.max_dips) {
+  position_ = profile.start_position;
+}
+
+const PlanSummary& Planner::summary() const { return summary_; }
+
+void Planner::validate(const interp::PathElement& e) const {
+  if (e.is_motion()) {
+    if (!e.curve) raise(990020, "motion element without geometry", e);
+    const double length = e.curve->length();
+    if (!std::isfinite(length) || length < 0) raise(990020, "path length is not a finite number", e);
+    if (!e.curve->start().allFinite() || !e.curve->end().allFinite())
+      raise(990020, "path end points are not finite", e);
+    if (!e.rapid) {
+      if (std::isnan(e.feed_mm_s) || e.feed_mm_s == 0.0) raise(10860, "", e);
+      if (e.feed_mm_s < 0 || !std::isfinite(e.feed_mm_s)) raise(14800, "", e);
+    }
+  } else if (e.kind == interp::ElementKind::Dwell) {
+    if (!std::isfinite(e.dwell_s) || e.dwell_s < 0) raise(12160, "dwell time must be >= 0", e);
+  }
+}
+
+void Planner::consume(interp::PathElement element) {
+  validate(element);
+  switch (element.kind) {
+    case interp::ElementKind::Line:
+    case interp::ElementKind::Arc:
+    case interp::ElementKind::SplineSpan:
+      if (element.curve->length() > 1e-9) {
+        append_motion(std::move(element));
+      } else {
+        append_passive(std::move(element));  // zero length: no motion, no corner
+      }
+      break;
+    case interp::ElementKind::DynamicsChange:
+      append_passive(std::move(element));
+      break;
+    case interp::ElementKind::Dwell: {
+      flush();
+      const double t = element.dwell_s;
+      account_pause(element, t);
+      break;
+    }
+    case interp::ElementKind::ToolChange:
+      flush();
+      account_pause(element, profile_.tool_change_time_s);
+      break;
+    case interp::ElementKind::Stop:
+      flush();
+      account_pause(element, 0.0);
+      if (element.stop == interp::StopKind::ProgramStop) seen_m0_ = true;
+      break;
+  }
+}
+
+void Planner::finish() {
+  if (finished_) return;
+  flush();
+  finished_ = true;
+  if (!any_cutting_) summary_.min_feed_mm_s = 0;
+  summary_.dips = dips_.dips();
+  summary_.dips_not_listed = dips_.not_listed();
+}
+
+void Planner::append_passive(interp::PathElement element) {
+  if (nodes_.empty()) {
+    // Nothing in motion: report it at once (zero time).
+    BlockTiming t;
+    t.source = element.source;
+    t.label = element.label;
+    t.rapid = element.rapid;
+    t.after_first_m0 = seen_m0_;
+    t.limit = Limit::ExactStop;
+    ++summary_.elements;
+    observer_.on_block(t);
+    return;
+  }
+  WindowElement w;
+  w.element = std::move(element);
+  w.segment_count = 0;
+  elements_.push_back(std::move(w));
+}
+
+void Planner::append_motion(interp::PathElement element) {
+  WindowElement& w = elements_.emplace_back();
+  w.element = std::move(element);
+  const geometry::Curve& curve = *w.element.curve;
+  const double length = curve.length();
+  w.dynamics = make_element_dynamics(w.element, length, profile_);
+  const ElementDynamics& dyn = w.dynamics;
+
+  auto bound_at = [&](const CurvePoint& p) {
+    VelocityBound b;
+    for (const auto& c : point_constraints_) b.tighten(c->max_velocity(dyn, p), c->limit());
+    if (dyn.rapid && b.limit == Limit::Feed) b.limit = Limit::Axis;
+    return b;
+  };
+
+  // Discretise: lines have constant limits, curves are cut into short equal segments.
+  size_t n = 1;
+  if (w.element.kind != interp::ElementKind::Line) {
+    const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
+    const double h = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
+    n = static_cast<size_t>(std::clamp(std::ceil(length / h), 1.0, double(kMaxSegmentsPerElement)));
+  }
+  const CurvePoint start = curve.at(0.0);
+  VelocityBound start_bound = bound_at(start);
+  RampLimits start_ramp = tangential_limits(dyn, start);
+
+  // The junction node: the window's start at rest, or the previous element's end.
+  if (nodes_.empty()) {
+    Node rest;
+    rest.limit = 0;
+    rest.limit_kind = Limit::ExactStop;
+    rest.backward = 0;
+    rest.backward_kind = Limit::ExactStop;
+    nodes_.push_back(rest);
+    front_velocity_ = 0;
+    front_kind_ = Limit::ExactStop;
+    front_anchor_ = {};
+  } else {
+    Node& j = nodes_.back();
+    VelocityBound b{j.limit, j.limit_kind};
+    b.tighten(start_bound.velocity, start_bound.limit);
+    if (last_motion_) {
+      Junction junction{last_motion_->element, last_motion_->dynamics, last_end_, w.element, dyn, start};
+      for (const auto& c : junction_constraints_) b.tighten(c->max_velocity(junction), c->limit());
+    }
+    j.limit = b.velocity;
+    j.limit_kind = b.limit;
+  }
+
+  CurvePoint prev_point = start;
+  VelocityBound prev_bound = start_bound;
+  RampLimits prev_ramp = start_ramp;
+  const double h = length / static_cast<double>(n);
+  for (size_t k = 1; k <= n; ++k) {
+    const double s = (k == n) ? length : h * static_cast<double>(k);
+    CurvePoint p = (n == 1) ? (w.element.kind == interp::ElementKind::Line ? curve.at(length) : curve.at(s))
+                            : curve.at(s);
+    VelocityBound b = (w.element.kind == interp::ElementKind::Line) ? start_bound : bound_at(p);
+    RampLimits r = (w.element.kind == interp::ElementKind::Line) ? start_ramp : tangential_limits(dyn, p);
+    Segment seg;
+    seg.length = s - h * static_cast<double>(k - 1);
+    seg.s_start = h * static_cast<double>(k - 1);
+    seg.cap = std::min(prev_bound.velocity, b.velocity);
+    seg.ramp = min_limits(prev_ramp, r);
+    segments_.push_back(seg);
+    Node node;
+    node.limit = b.velocity;
+    node.limit_kind = b.limit;
+    if (k == n && ends_in_exact_stop(w.element)) {
+      node.limit = 0;
+      node.limit_kind = Limit::ExactStop;
+    }
+    nodes_.push_back(node);
+    prev_point = p;
+    prev_bound = b;
+    prev_ramp = r;
+  }
+  w.segment_count = n;
+  last_motion_ = &w;
+  last_end_ = prev_point;
+  ++motion_in_window_;
+
+  backward_pass(false);
+  peak_nodes_ = std::max(peak_nodes_, nodes_.size());
+  peak_elements_ = std::max(peak_elements_, elements_.size());
+  while (motion_in_window_ > static_cast<size_t>(profile_.lookahead_blocks)) commit_front();
+}
+
+double Planner::extend(RampAnchor& anchor, double v_here, const Segment& seg) {
+  const double direct = ramp_reach(v_here, seg.length, seg.ramp);
+  if (anchor.distance > 0) {
+    const RampLimits chained_limits = min_limits(anchor.limits, seg.ramp);
+    const double chained = ramp_reach(anchor.velocity, anchor.distance + seg.length, chained_limits);
+    if (chained >= direct) {
+      anchor.distance += seg.length;
+      anchor.limits = chained_limits;
+      return chained;
+    }
+  }
+  anchor = {v_here, seg.length, seg.ramp};
+  return direct;
+}
+
+void Planner::backward_pass(bool full) {
+  const size_t last = nodes_.size() - 1;
+  Node& end = nodes_[last];
+  end.backward = 0;
+  end.backward_kind = (end.limit == 0 && end.limit_kind == Limit::ExactStop) ? Limit::ExactStop : Limit::Lookahead;
+  end.anchor = {};
+  // Node 0 carries the committed velocity; it is never revised.
+  for (size_t i = last; i-- > 1;) {
+    Node& node = nodes_[i];
+    const Node& next = nodes_[i + 1];
+    RampAnchor anchor = next.anchor;
+    const double reach = extend(anchor, next.backward, segments_[i]);
+    double b;
+    Limit kind;
+    if (node.limit <= reach) {
+      b = node.limit;
+      kind = node.limit_kind;
+      anchor = {};
+    } else {
+      b = reach;
+      kind = next.backward_kind;
+    }
+    const bool settled = !full && b == node.backward && kind == node.backward_kind && b == node.limit;
+    node.backward = b;
+    node.backward_kind = kind;
+    node.anchor = anchor;
+    if (settled) break;
+  }
+}
+
+void Planner::commit_front() {
+  WindowElement& w = elements_.front();
+  const interp::PathElement& e = w.element;
+  BlockTiming timing;
+  timing.source = e.source;
+  timing.label = e.label;
+  timing.rapid = e.rapid;
+  timing.after_first_m0 = seen_m0_;
+
+  double v = front_velocity_;
+  Limit kind = front_kind_;
+  double v_min = v, v_max = v;
+  Limit v_min_kind = kind;
+  // Lowest velocity outside planned standstills (ramps into and out of exact stops).
+  double cut_min = kInf;
+  Limit cut_kind = Limit::Feed;
+  auto note_cut = [&](double vel, Limit k) {
+    if (k != Limit::ExactStop && vel < cut_min) {
+      cut_min = vel;
+      cut_kind = k;
+    }
+  };
+  if (w.segment_count > 0) note_cut(v, kind);
+
+  double time = 0;
+  double length = 0;
+  for (size_t k = 0; k < w.segment_count; ++k) {
+    const Segment& seg = segments_[k];
+    const Node& next = nodes_[k + 1];
+    const double reach = extend(front_anchor_, v, seg);
+    double v1;
+    Limit k1;
+    if (next.backward <= reach) {
+      v1 = next.backward;
+      k1 = next.backward_kind;
+      front_anchor_ = {};
+    } else {
+      v1 = reach;
+      k1 = kind;
+    }
+    const SegmentProfile profile = plan_segment(v, v1, seg.cap, seg.length, seg.ramp);
+    // A positive but absurdly small F would take forever: the control cannot move that slowly.
+    if (!std::isfinite(profile.duration)) raise(14800, "feed too small to traverse the block", e);
+    if (options_.emit_samples) emit_samples(w, seg, profile);
+    clock_s_ += profile.duration;
+    time += profile.duration;
+    length += seg.length;
+    v_max = std::max(v_max, profile.peak);
+    if (v1 < v_min) {
+      v_min = v1;
+      v_min_kind = k1;
+    }
+    note_cut(v1, k1);
+    v = v1;
+    kind = k1;
+  }
+  if (w.segment_count > 0) {
+    position_ = e.curve->end();
+    position_known_ = true;
+  }
+  for (size_t k = 0; k < w.segment_count; ++k) {
+    nodes_.pop_front();
+    segments_.pop_front();
+  }
+  front_velocity_ = v;
+  front_kind_ = kind;
+
+  timing.time_s = time;
+  timing.length_mm = length;
+  timing.v_max_mm_s = v_max;
+  timing.v_min_mm_s = v_min;
+  timing.limit = v_min_kind;
+
+  summary_.time_s += time;
+  if (seen_m0_) summary_.time_after_m0_s += time;
+  summary_.path_length_mm += length;
+  ++summary_.elements;
+  if (w.segment_count > 0 && !e.rapid) {
+    summary_.max_feed_mm_s = std::max(summary_.max_feed_mm_s, v_max);
+    if (cut_min < kInf) {
+      summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_min) : cut_min;
+      any_cutting_ = true;
+      dips_.add(e.source, e.feed_mm_s, cut_min, cut_kind);
+    }
+  } else if (w.segment_count > 0) {
+    dips_.interrupt();
+  }
+  observer_.on_block(timing);
+
+  if (w.segment_count > 0) --motion_in_window_;
+  if (last_motion_ == &w) last_motion_ = nullptr;
+  elements_.pop_front();
+}
+
+void Planner::flush() {
+  if (nodes_.empty()) return;
+  Node& end = nodes_.back();
+  end.limit = 0;
+  end.limit_kind = Limit::ExactStop;
+  backward_pass(true);
+  while (!elements_.empty()) commit_front();
+  nodes_.clear();
+  segments_.clear();
+  motion_in_window_ = 0;
+  last_motion_ = nullptr;
+  front_velocity_ = 0;
+  front_kind_ = Limit::ExactStop;
+  front_anchor_ = {};
+}
+
+void Planner::account_pause(const interp::PathElement& e, double duration) {
+  BlockTiming t;
+  t.source = e.source;
+  t.label = e.label;
+  t.time_s = duration;
+  t.limit = Limit::ExactStop;
+  t.after_first_m0 = seen_m0_;
+  if (options_.emit_samples) emit_rest_samples(e, duration);
+  clock_s_ += duration;
+  summary_.time_s += duration;
+  if (seen_m0_) summary_.time_after_m0_s += duration;
+  ++summary_.elements;
+  dips_.interrupt();
+  observer_.on_block(t);
+}
+
+void Planner::emit_samples(const WindowElement& w, const Segment& seg, const SegmentProfile& profile) {
+  const double end = clock_s_ + profile.duration;
+  for (;;) {
+    const double t = static_cast<double>(next_sample_) * profile_.ipo_cycle_s;
+    if (t > end) break;
+    const ProfileState st = evaluate(profile, t - clock_s_);
+    const CurvePoint p = w.element.curve->at(seg.s_start + st.s);
+    TrajectorySample sample;
+    sample.t_s = t;
+    sample.position = p.position;
+    sample.v_mm_s = st.v;
+    sample.a_mm_s2 = st.a;
+    sample.j_mm_s3 = st.j;
+    sample.source = &w.element.source;
+    sample.tangent = p.tangent;
+    sample.axis_velocity_mm_s = st.v * p.tangent;
+    sample.axis_accel_mm_s2 = st.a * p.tangent + st.v * st.v * p.curvature_vector;
+    observer_.on_sample(sample);
+    ++next_sample_;
+  }
+}
+
+void Planner::emit_rest_samples(const interp::PathElement& e, double duration) {
+  const double end = clock_s_ + duration;
+  for (;;) {
+    const double t = static_cast<double>(next_sample_) * profile_.ipo_cycle_s;
+    if (t > end) break;
+    TrajectorySample sample;
+    sample.t_s = t;
+    sample.position = position_;
+    sample.source = &e.source;
+    observer_.on_sample(sample);
+    ++next_sample_;
+  }
+}
+
+}  // namespace drycut::motion

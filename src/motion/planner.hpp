@@ -1,0 +1,158 @@
+#pragma once
+// The motion planner: consumes the PathElement stream and produces timing.
+//
+// ALGORITHM
+// =========
+// 1. Discretisation. Every motion element becomes one or more SEGMENTS between NODES on the
+//    path. A line has constant limits: one segment. Arcs and spline spans change direction
+//    and curvature along the element: they are cut into n = ceil(L/h) equal segments with
+//    h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), at most
+//    20000 per element. The node between two elements (the JUNCTION) is shared.
+//
+// 2. Limits (path_constraints.hpp). At each node the POINT constraints give an upper bound on
+//    the path velocity, each with its Limit tag: programmed F, axis velocity
+//    v·|t_i| <= vmax_i, centripetal acceleration v²·|κ_i| <= share·a_i, SOFT curvature jerk
+//    v³·|P'''_i| <= j_i, short block v <= factor·L/T_IPO. A segment's interior cap is the
+//    lower of its two end nodes. At a junction the JUNCTION constraints apply too: exact
+//    stop (G60/G9 -> 0) and the G64 overload rule |v·(t2_i - t1_i)| <= a_i·(OVL-1)·T_IPO.
+//    Before Dwell, Stop and ToolChange the path ends at rest (the window is flushed).
+//    Each segment also carries its tangential RampLimits: a_t = min_i a_i'/|t_i| (a_i' =
+//    axis acceleration × SOFT/G0 factor, × (1 - share) where the path is curved) and, under
+//    SOFT, j_t = min(path jerk, min_i j_i/|t_i|); under BRISK j_t = infinity.
+//
+// 3. Window. The planner keeps at most `lookahead_blocks` motion elements (nodes, segments
+//    and the elements themselves in three deques). The LAST node of the window is assumed to
+//    end at rest (Limit::Lookahead) as on the control, so memory never grows with program
+//    length. When a new element arrives the old last node becomes an ordinary junction.
+//
+// 4. Backward pass (run after each append, from the new last node towards the front).
+//    b[last] = 0; b[i] = min(limit[i], reach from b[i+1] backwards over segment i).
+//    "Reach" is the closed-form ramp of velocity_ramp.hpp: trapezoid (BRISK) or jerk-limited
+//    S-curve starting at zero acceleration (SOFT). A ramp that spans several short segments
+//    is followed as ONE S-curve from its ANCHOR (the last node where a limit bound), using
+//    the smallest acceleration and jerk seen since the anchor; if restarting from the
+//    previous node reaches higher, the anchor moves there. Each node remembers its anchor.
+//    Early exit (as grblHAL's "planned" pointer): once a node comes out unchanged and bound
+//    by its own limit, nothing before it can change, so the pass stops there. Values only
+//    grow as the window grows, so a velocity committed earlier stays feasible.
+//
+// 5. Commit (forward pass). When the window holds more than lookahead_blocks motion elements
+//    (or on a flush) the FRONT element is committed: starting from the committed velocity at
+//    its first node, v[i+1] = min(b[i+1], reach forward from v[i]) (anchored the same way).
+//    Each segment then gets its profile: accelerate, cruise at the cap, decelerate, with
+//    zero acceleration at both nodes; a segment too short for that (part of a ramp running
+//    over several segments) uses constant acceleration between its node velocities, which
+//    never exceeds the ramp's acceleration. Time = sum of the segment durations.
+//    The element's BlockTiming (time, length, v_max, v_min and the Limit that bound v_min:
+//    the limit at the node or, on a ramp, the limit the ramp comes from) goes to the
+//    observer; optional samples at every IPO cycle (t = k·T_IPO) are evaluated from the
+//    segment profiles.
+//
+// 6. Flush. Dwell, Stop, ToolChange and finish() flush: the last node is a real stop
+//    (Limit::ExactStop), a full backward pass runs, and every element is committed. Dwell
+//    adds dwell_s, ToolChange the profile's tool_change_time_s, M0 takes no time (the
+//    operator restarts) but starts the "after M0" clock.
+//
+// Guarantees (tests/motion/planner_property_test.cpp): on lines every IPO sample keeps each
+// axis velocity and acceleration within 1e-6 of its limit; on arcs the limits hold at the
+// nodes and samples between them stay within 2 %. Jerk is limited inside each closed-form
+// segment profile and by the curvature-jerk constraint at constant speed; where a ramp meets
+// a limit, the opposite ramp or a block transition the acceleration may step (jerk is not
+// checked, and PATH_TRANS_JERK_LIM at curvature steps is not modelled).
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "interp/path_element.hpp"
+#include "machine/machine_profile.hpp"
+#include "motion/element_dynamics.hpp"
+#include "motion/feed_dip_collector.hpp"
+#include "motion/path_constraints.hpp"
+#include "motion/plan_result.hpp"
+#include "motion/velocity_ramp.hpp"
+
+namespace drycut::motion {
+
+class Planner : public interp::ElementSink {
+ public:
+  Planner(const machine::MachineProfile& profile, PlanObserver& observer, PlannerOptions options = {});
+
+  void consume(interp::PathElement element) override;
+  void finish() override;
+  const PlanSummary& summary() const;
+
+  // Window size now and the largest seen (memory stays bounded by the look-ahead depth).
+  size_t window_nodes() const { return nodes_.size(); }
+  size_t peak_window_nodes() const { return peak_nodes_; }
+  size_t peak_window_elements() const { return peak_elements_; }
+
+ private:
+  // A ramp followed from the node where it started (see step 4).
+  struct RampAnchor {
+    double velocity = 0;
+    double distance = 0;  // 0: the ramp starts at the current node
+    RampLimits limits;
+  };
+  struct Node {
+    double limit = 0;
+    Limit limit_kind = Limit::Feed;
+    double backward = 0;
+    Limit backward_kind = Limit::Lookahead;
+    RampAnchor anchor;
+  };
+  struct Segment {
+    double length = 0;
+    double s_start = 0;  // arc length in the element where the segment starts
+    double cap = 0;
+    RampLimits ramp;
+  };
+  struct WindowElement {
+    interp::PathElement element;
+    ElementDynamics dynamics;
+    size_t segment_count = 0;
+  };
+
+  void append_motion(interp::PathElement element);
+  void append_passive(interp::PathElement element);
+  void backward_pass(bool full);
+  void commit_front();
+  void flush();
+  void account_pause(const interp::PathElement& element, double duration);
+  void emit_samples(const WindowElement& e, const Segment& seg, const SegmentProfile& profile);
+  void emit_rest_samples(const interp::PathElement& element, double duration);
+  void validate(const interp::PathElement& element) const;
+  static double extend(RampAnchor& anchor, double v_here, const Segment& seg);
+
+  machine::MachineProfile profile_;  // a copy: callers may pass a temporary
+  PlanObserver& observer_;
+  PlannerOptions options_;
+  std::vector<std::unique_ptr<PointConstraint>> point_constraints_;
+  std::vector<std::unique_ptr<JunctionConstraint>> junction_constraints_;
+
+  std::deque<WindowElement> elements_;
+  std::deque<Node> nodes_;
+  std::deque<Segment> segments_;
+  size_t motion_in_window_ = 0;
+  // The last motion element with length in the window, for the next junction.
+  const WindowElement* last_motion_ = nullptr;
+  geometry::CurvePoint last_end_;
+
+  // Forward state at the front node.
+  double front_velocity_ = 0;
+  Limit front_kind_ = Limit::ExactStop;
+  RampAnchor front_anchor_;
+
+  double clock_s_ = 0;
+  uint64_t next_sample_ = 0;
+  Vec3 position_ = Vec3::Zero();
+  bool position_known_ = false;
+  bool seen_m0_ = false;
+  bool finished_ = false;
+  bool any_cutting_ = false;
+  size_t peak_nodes_ = 0;
+  size_t peak_elements_ = 0;
+  FeedDipCollector dips_;
+  PlanSummary summary_;
+};
+
+}  // namespace drycut::motion
