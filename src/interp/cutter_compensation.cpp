@@ -113,8 +113,7 @@ void CutterCompensation::consume(PathElement element) {
   dummy_count_ = 0;
   if (phase_ == Phase::Approaching) complete_approach(element);
   add_motion(element);
-  const int check_blocks = element.compensation.collision_detection ? std::max(1, profile_.cutcom_maxnum_check_blocks) : 1;
-  release_old_blocks(check_blocks);
+  release_old_blocks(check_blocks());
 }
 
 void CutterCompensation::finish() {
@@ -157,17 +156,25 @@ void CutterCompensation::complete_approach(const PathElement& first) {
   const Vec3 t_approach = plane_direction(corner - from, plane_);
   const bool around = approach_.compensation.contour_approach && !t_approach.isZero() &&
                       is_outside_corner(t_approach, t_first, d, plane_);
+  std::vector<CurvePtr> curves;
   if (around) {
     // KONT from behind the contour: perpendicular to the approach, then around the start point.
     const Vec3 beside = corner + d * plane_.normal.cross(t_approach);
-    emit(approach_, std::make_shared<geometry::LineCurve>(from, beside), false);
-    const auto curves = outside_corner_curves(corner, t_approach, t_first, d,
-                                              approach_.compensation.intersection_corners, plane_);
-    for (size_t i = 0; i < curves.size(); ++i) emit(approach_, curves[i], i + 1 == curves.size());
+    curves.push_back(std::make_shared<geometry::LineCurve>(from, beside));
+    for (const auto& c : outside_corner_curves(corner, t_approach, t_first, d,
+                                               approach_.compensation.intersection_corners, plane_))
+      curves.push_back(c);
   } else {
-    emit(approach_, std::make_shared<geometry::LineCurve>(from, target), true);
+    curves.push_back(std::make_shared<geometry::LineCurve>(from, target));
   }
-  flush_window();  // elements programmed between the approach and the first contour element
+  // The approach stays in the window (in front of the elements programmed between it and the
+  // first contour element): an entry that turns back sharply loops across it.
+  ++block_serial_;
+  for (size_t i = curves.size(); i-- > 0;) {
+    PathElement part = approach_;
+    part.kind = kind_of(curves[i], ElementKind::Line);
+    window_.push_front(Item{std::move(part), OffsetPiece(curves[i], 0.0, plane_), block_serial_, false});
+  }
   phase_ = Phase::Active;
 }
 
@@ -180,25 +187,52 @@ void CutterCompensation::deselect(PathElement retract) {
     consume(std::move(retract));
     return;
   }
-  flush_window();
   phase_ = Phase::Inactive;
   dummy_count_ = 0;
-  if (!retract.curve) return;
+  if (!retract.curve || retract.kind != ElementKind::Line) {
+    flush_window();
+    // A connecting line is inserted in front of a retract that is not a straight move.
+    if (retract.curve) emit(retract, retract.curve, true);
+    return;
+  }
+  // The end of the compensated path: the last piece still in the window, else the last released.
+  Vec3 from = tool_position_, direction = last_direction_;
+  double offset = last_offset_;
+  for (size_t i = window_.size(); i-- > 0;) {
+    if (!window_[i].piece) continue;
+    from = window_[i].piece->end();
+    for (size_t k = i + 1; k-- > 0;)
+      if (window_[k].piece && window_[k].piece->offset() != 0.0) {
+        direction = end_direction(window_[k].piece->base(), plane_);
+        offset = window_[k].piece->offset();
+        break;
+      }
+    break;
+  }
   const Vec3 corner = retract.curve->start(), goal = retract.curve->end();
   const Vec3 t_retract = plane_direction(goal - corner, plane_);
-  if (retract.compensation.contour_approach && !t_retract.isZero() && last_offset_ != 0.0 &&
-      is_outside_corner(last_direction_, t_retract, last_offset_, plane_)) {
+  std::vector<CurvePtr> curves;
+  if (retract.compensation.contour_approach && !t_retract.isZero() && offset != 0.0 &&
+      is_outside_corner(direction, t_retract, offset, plane_)) {
     // KONT: around the end point until perpendicular to the retract direction.
-    const auto curves = outside_corner_curves(corner, last_direction_, t_retract, last_offset_,
-                                              retract.compensation.intersection_corners, plane_);
-    for (const auto& curve : curves) emit(retract, curve, false);
+    curves = outside_corner_curves(corner, direction, t_retract, offset, retract.compensation.intersection_corners,
+                                   plane_);
+    from = curves.back()->end();
   }
-  if (retract.kind == ElementKind::Line) {
-    emit(retract, std::make_shared<geometry::LineCurve>(tool_position_, goal), true);
-  } else {
-    emit(retract, retract.curve, true);  // a connecting line is inserted in front of it
+  curves.push_back(std::make_shared<geometry::LineCurve>(from, goal));
+  // The retract takes part in the crossing search: a last span that bends back loops across it.
+  ++block_serial_;
+  const size_t first_new = window_.size();
+  for (const auto& curve : curves) {
+    PathElement part = retract;
+    part.kind = kind_of(curve, ElementKind::Line);
+    window_.push_back(Item{std::move(part), OffsetPiece(curve, 0.0, plane_), block_serial_, false});
   }
+  resolve_crossings(first_new, check_blocks());
+  flush_window();
 }
+
+int CutterCompensation::check_blocks() const { return std::max(1, profile_.cutcom_maxnum_check_blocks); }
 
 std::optional<size_t> CutterCompensation::last_piece_index() const {
   for (size_t i = window_.size(); i-- > 0;)
@@ -211,42 +245,44 @@ void CutterCompensation::add_motion(const PathElement& element) {
   const double d = signed_offset(element.compensation);
   OffsetPiece piece(element.curve, d, plane_);
   const size_t first_new = window_.size();
-  bool joined = true;
   if (const auto previous = last_piece_index()) {
     const OffsetPiece& before = *window_[*previous].piece;
     const Vec3 from = before.end(), to = piece.start();
-    auto push_corner = [&](const CurvePtr& curve) {
+    auto push_corner = [&](const CurvePtr& curve, bool gap_bridge) {
       PathElement corner = element;
       corner.kind = kind_of(curve, ElementKind::Line);
-      window_.push_back(Item{std::move(corner), OffsetPiece(curve, 0.0, plane_), block_serial_, true});
+      window_.push_back(Item{std::move(corner), OffsetPiece(curve, 0.0, plane_), block_serial_, gap_bridge});
     };
     if (plane_.project(to - from).norm() >= kJoinTolerance) {
       const Vec3 t_in = end_direction(before.base(), plane_), t_out = start_direction(*element.curve, plane_);
       if (before.offset() != d) {
-        push_corner(std::make_shared<geometry::LineCurve>(from, to));  // radius or side changed
+        push_corner(std::make_shared<geometry::LineCurve>(from, to), false);  // radius or side changed
       } else if (is_outside_corner(t_in, t_out, d, plane_)) {
         for (const auto& curve : outside_corner_curves(element.curve->start(), t_in, t_out, d,
                                                        element.compensation.intersection_corners, plane_))
-          push_corner(curve);
+          push_corner(curve, false);
       } else {
-        joined = false;  // inside corner: the crossing search must find the intersection
+        // Inside corner: the bridge closes the raw path; the crossing search cuts it out again.
+        push_corner(std::make_shared<geometry::LineCurve>(from, to), true);
       }
     }
   }
-  window_.push_back(Item{element, std::move(piece), block_serial_, joined});
-  const int check_blocks = element.compensation.collision_detection ? std::max(1, profile_.cutcom_maxnum_check_blocks) : 1;
-  resolve_crossings(first_new, check_blocks);
+  window_.push_back(Item{element, std::move(piece), block_serial_, false});
+  resolve_crossings(first_new, check_blocks());
 }
 
 void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
   const int oldest_block = block_serial_ - check_blocks;
   size_t index = first_new;
   for (int pass = 0; pass < kMaxCrossingPasses && index < window_.size(); ++pass) {
-    if (!window_[index].piece) {
+    // A gap bridge is never cut at a crossing of its own: it only ever lies inside a cut stretch.
+    if (!window_[index].piece || window_[index].gap_bridge) {
       ++index;
       continue;
     }
-    // Crossings with earlier pieces, oldest first: the earliest cuts out the largest stretch.
+    // Crossings with earlier pieces, nearest first: a fold is closed by the crossing next to it
+    // (a closed contour's offset also meets its own start, which is sound and stays). Of one
+    // pair, the crossing first along the earlier piece closes the largest loop.
     std::optional<size_t> previous_piece;
     for (size_t k = index; k-- > 0;)
       if (window_[k].piece) {
@@ -254,16 +290,19 @@ void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
         break;
       }
     bool cut = false;
-    for (size_t k = 0; k < index && !cut; ++k) {
-      if (!window_[k].piece || window_[k].block < oldest_block) continue;
-      const auto crossing = find_crossing(*window_[k].piece, *window_[index].piece, previous_piece == k, plane_);
-      if (!crossing || !cut_out_is_defective(k, index, *crossing)) continue;
-      const size_t removed_before =
-          static_cast<size_t>(std::count_if(window_.begin() + static_cast<long>(k) + 1, window_.begin() + static_cast<long>(index),
-                                            [](const Item& it) { return it.piece.has_value(); }));
-      cut_between(k, index, crossing->u_earlier, crossing->u_later);
-      index -= removed_before;
-      cut = true;
+    for (size_t k = index; k-- > 0 && !cut;) {
+      if (!window_[k].piece || window_[k].gap_bridge || window_[k].block < oldest_block) continue;
+      for (const PieceCrossing& crossing :
+           find_crossings(*window_[k].piece, *window_[index].piece, previous_piece == k, plane_)) {
+        if (!cut_out_is_defective(k, index, crossing)) continue;
+        const size_t removed_before = static_cast<size_t>(
+            std::count_if(window_.begin() + static_cast<long>(k) + 1, window_.begin() + static_cast<long>(index),
+                          [](const Item& it) { return it.piece.has_value(); }));
+        cut_between(k, index, crossing.u_earlier, crossing.u_later);
+        index -= removed_before;
+        cut = true;
+        break;
+      }
     }
     if (cut) continue;  // search again from the new start of the piece
     const auto loop = find_self_crossing(*window_[index].piece, plane_);
@@ -271,7 +310,6 @@ void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
       Item second = window_[index];
       window_[index].piece->trim(window_[index].piece->u_begin(), loop->u_earlier);
       second.piece->trim(loop->u_later, second.piece->u_end());
-      second.joined = true;
       window_.insert(window_.begin() + static_cast<long>(index) + 1, std::move(second));
       ++index;
       continue;
@@ -281,20 +319,15 @@ void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
 }
 
 bool CutterCompensation::cut_out_is_defective(size_t earlier, size_t later, const PieceCrossing& crossing) const {
-  // Only a stretch the tool cannot follow is cut out: an open inside joint (no intersection yet)
-  // or an offset running backwards. Elsewhere crossing offsets are the programmed contour's own
-  // (closed contours, loops), and the control does not cut them.
-  bool adjacent = true;
-  for (size_t i = earlier + 1; i < later; ++i) adjacent = adjacent && !window_[i].piece.has_value();
-  // The later piece's own open joint is resolved by its neighbour; a crossing further back would
-  // cut out sound pieces (the start of a closed contour, for instance).
-  if (adjacent && !window_[later].joined) return true;
+  // Only a stretch the tool cannot follow is cut out: a gap bridge over an inside joint or an
+  // offset running backwards. Elsewhere crossing offsets are the programmed contour's own
+  // (closed contours, loops at another depth), and the control does not cut them.
   const OffsetPiece& first = *window_[earlier].piece;
   const OffsetPiece& last = *window_[later].piece;
   if (first.runs_backwards(crossing.u_earlier, first.u_end())) return true;
   if (last.runs_backwards(last.u_begin(), crossing.u_later)) return true;
   for (size_t i = earlier + 1; i < later; ++i)
-    if (window_[i].piece && (!window_[i].joined || window_[i].piece->runs_backwards())) return true;
+    if (window_[i].piece && (window_[i].gap_bridge || window_[i].piece->runs_backwards())) return true;
   return false;
 }
 
@@ -303,7 +336,6 @@ void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earl
   first.trim(first.u_begin(), u_earlier);
   OffsetPiece& second = *window_[later].piece;
   second.trim(u_later, second.u_end());
-  window_[later].joined = true;
   const int keep_a = window_[earlier].block, keep_b = window_[later].block;
   std::vector<int> warned;
   std::deque<Item> kept;
@@ -342,7 +374,7 @@ void CutterCompensation::emit_front() {
     emit_passenger(std::move(item.element));
     return;
   }
-  if (!item.joined)
+  if (item.gap_bridge)
     raise(10751, "no intersection of the offset paths within the checked blocks (MD20240)", item.element.source);
   if (item.piece->runs_backwards())
     raise(10751, "radius of curvature smaller than the tool radius on the compensation side", item.element.source);

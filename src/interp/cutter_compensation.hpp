@@ -15,17 +15,29 @@
 // - Outside corners: G450 circle of the tool radius around the corner (DISC is not modelled:
 //   always the plain circle), G451 the intersection of the offset lines unless the direction
 //   change exceeds 100 degrees (then the circle). Corner elements belong to the NEXT block.
-//   Inside corners: the offset paths are intersected and both trimmed. A joint whose offset
-//   points are closer than 1e-6 mm is tangential and gets no corner element.
+//   A joint whose offset points are closer than 1e-6 mm is tangential and gets no corner element.
 // - Offsets of lines and arcs in the plane are exact LineCurves / ArcCurves; anything else is a
 //   geometry::OffsetCurve. Only the in-plane part is offset; motion along the normal stays.
-// - Bottleneck detection: each new element's offset is searched for crossings with the offsets
-//   of the preceding MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS blocks (CDON) or only the previous block
-//   (CDOF), oldest first, and with itself (loops). At a crossing the path between is cut out;
-//   every block cut out completely gets warning 10763 (once). Alarm 10751 (collision danger):
-//   an inside joint for which no crossing turns up within the checked blocks, or an offset left
-//   in the path that runs backwards or vanishes (an arc or bend tighter than the tool radius on
-//   the compensation side; 10751 is the number the facts give for this danger).
+// - Inside corners and loops (one model for both): the raw tool-centre path is the chain of the
+//   offsets, with a straight "gap bridge" from one offset's end to the next one's start at every
+//   inside joint. That raw path folds over itself wherever the tool cannot follow the contour: at
+//   an inside corner (the bridge runs backwards), and where a line, arc or spline span bends
+//   tighter than the tool radius on the compensation side (the offset runs backwards). Such a
+//   fold is removed by cutting the raw path at the point where it crosses itself, which is where
+//   the control's intersection search finds it: between the offsets of one block, of adjacent
+//   blocks, or of blocks up to MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS apart (so an inside corner
+//   followed by blocks shorter than r tan(angle/2) is resolved several blocks on). Only a stretch
+//   that contains such a fold is cut: a crossing of sound offsets (a contour that crosses itself,
+//   a loop over the same path at another depth) stays. The approach and the retract move take
+//   part in the search (an entry spline that turns back sharply loops across its approach).
+//   Every block cut out completely gets warning 10763. Alarm 10751 (collision danger): a gap
+//   bridge or a backwards-running offset that is still in the path when it leaves the window
+//   (no crossing within the checked blocks).
+// - CDON and CDOF search the same MD20240 blocks: the manual's CDOF searches the previous block
+//   and, failing that, earlier ones; the experiment's programs (CDOF, the reset default) were
+//   milled with inside corners resolved several blocks on. Crossings are tested in the plane
+//   only (the tool-centre path keeps its motion along the normal; a cut joins the two stretches
+//   by a straight move).
 // - Feed: the tool-centre path gets the programmed F unchanged (F is the tool-centre velocity,
 //   not CFC's contour velocity). Every output element keeps the source block, feed, dynamics and
 //   label of the block it comes from; a block split into several elements stops (G9/G60) only
@@ -62,8 +74,8 @@ class CutterCompensation : public ElementSink {
   struct Item {
     PathElement element;
     std::optional<OffsetPiece> piece;
-    int block = 0;        // serial number of the programmed motion block
-    bool joined = true;   // false: inside joint before this piece still without a crossing
+    int block = 0;          // serial number of the programmed motion block
+    bool gap_bridge = false;  // the straight bridge over an inside joint: must be cut out
   };
 
   void select(PathElement approach);
@@ -80,6 +92,7 @@ class CutterCompensation : public ElementSink {
   void emit_passenger(PathElement element);
   void count_dummy(const PathElement& element);
   std::optional<size_t> last_piece_index() const;
+  int check_blocks() const;
 
   ElementSink& downstream_;
   const machine::MachineProfile& profile_;

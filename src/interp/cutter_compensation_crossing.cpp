@@ -11,6 +11,9 @@ using Point2 = Eigen::Vector2d;
 // Parameters of a shared joint closer than this (mm of base arc length) are the joint itself.
 constexpr double kJointTolerance = 1e-6;
 constexpr double kSegmentSlack = 1e-9;
+// A crossing this close to the shared joint of consecutive pieces is the joint itself: at a cusp
+// of a looping offset the point hardly moves with the parameter, so the parameter test misses it.
+constexpr double kJointPositionTolerance = 1e-5;  // mm
 
 double cross2(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -59,20 +62,21 @@ PieceCrossing refine(const OffsetPiece& a, const OffsetPiece& b, PieceCrossing g
 
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
-bool before(const PieceCrossing& x, const std::optional<PieceCrossing>& best) {
+bool before(const PieceCrossing& x, const std::optional<PieceCrossing>& best) {  // for self crossings
   return !best || x.u_earlier < best->u_earlier ||
          (x.u_earlier == best->u_earlier && x.u_later > best->u_later);
 }
 
 }  // namespace
 
-std::optional<PieceCrossing> find_crossing(const OffsetPiece& earlier, const OffsetPiece& later, bool consecutive,
-                                           const CompensationPlane& plane) {
+std::vector<PieceCrossing> find_crossings(const OffsetPiece& earlier, const OffsetPiece& later, bool consecutive,
+                                          const CompensationPlane& plane) {
   const auto& pu = earlier.sample_parameters();
   const auto& pxy = earlier.sample_points();
   const auto& qu = later.sample_parameters();
   const auto& qxy = later.sample_points();
-  std::optional<PieceCrossing> best;
+  std::vector<PieceCrossing> all;
+  const Point2 joint = plane.project(earlier.end());
   for (size_t i = 0; i + 1 < pxy.size(); ++i) {
     for (size_t j = 0; j + 1 < qxy.size(); ++j) {
       if (boxes_apart(pxy[i], pxy[i + 1], qxy[j], qxy[j + 1])) continue;
@@ -80,14 +84,17 @@ std::optional<PieceCrossing> find_crossing(const OffsetPiece& earlier, const Off
       if (!ts) continue;
       PieceCrossing c{lerp(pu[i], pu[i + 1], ts->first), lerp(qu[j], qu[j + 1], ts->second)};
       c = refine(earlier, later, c, plane);
-      if (consecutive && earlier.u_end() - c.u_earlier < kJointTolerance &&
-          c.u_later - later.u_begin() < kJointTolerance)
+      if (consecutive && ((earlier.u_end() - c.u_earlier < kJointTolerance &&
+                           c.u_later - later.u_begin() < kJointTolerance) ||
+                          (plane.project(earlier.position(c.u_earlier)) - joint).norm() < kJointPositionTolerance))
         continue;
-      if (before(c, best)) best = c;
+      all.push_back(c);
     }
-    if (best) break;  // later segments of `earlier` cannot come first
   }
-  return best;
+  std::sort(all.begin(), all.end(), [](const PieceCrossing& x, const PieceCrossing& y) {
+    return x.u_earlier < y.u_earlier || (x.u_earlier == y.u_earlier && x.u_later > y.u_later);
+  });
+  return all;
 }
 
 std::optional<PieceCrossing> find_self_crossing(const OffsetPiece& piece, const CompensationPlane& plane) {

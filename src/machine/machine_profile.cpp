@@ -37,6 +37,9 @@ AxisData read_axis(const json& node, const std::string& path, const std::string&
                                        r.key_path("max_accel"));
   a.max_jerk_mm_s3 = require_positive(required_quantity(r, "max_jerk", Dimension::Jerk),
                                       r.key_path("max_jerk"));
+  a.transition_jerk_mm_s3 = a.max_jerk_mm_s3;
+  if (auto v = r.quantity("transition_jerk", Dimension::Jerk))
+    a.transition_jerk_mm_s3 = require_positive(*v, r.key_path("transition_jerk"));
   r.reject_unknown_keys();
   if (!(a.min_mm < a.max_mm)) throw ProfileError(path + ".min: must be < max (software limit range)");
   return a;
@@ -218,7 +221,8 @@ std::string profile_to_json(const MachineProfile& p) {
                     {"max_mm", a.max_mm},
                     {"max_velocity_mm_min", a.max_velocity_mm_s * 60.0},
                     {"max_accel_m_s2", a.max_accel_mm_s2 / 1000.0},
-                    {"max_jerk_m_s3", a.max_jerk_mm_s3 / 1000.0}};
+                    {"max_jerk_m_s3", a.max_jerk_mm_s3 / 1000.0},
+                    {"transition_jerk_m_s3", a.transition_jerk_mm_s3 / 1000.0}};
   }
   root["axes"] = axes;
   root["path"] = {{"ipo_cycle_ms", p.ipo_cycle_s * 1000.0},

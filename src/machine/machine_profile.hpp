@@ -20,6 +20,7 @@ struct AxisData {
   double max_velocity_mm_s = 0;   // MD32000 MAX_AX_VELO
   double max_accel_mm_s2 = 0;     // MD32300 MAX_AX_ACCEL
   double max_jerk_mm_s3 = 0;      // MD32431 MAX_AX_JERK
+  double transition_jerk_mm_s3 = 0;  // MD32432 PATH_TRANS_JERK_LIM (SOFT, at block transitions); 0 = max_jerk
 };
 
 struct ToolEdge {

@@ -20,6 +20,7 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
     d.raw_axis_accel[i] = axis.max_accel_mm_s2;
     d.axis_accel[i] = axis.max_accel_mm_s2 * accel_factor;
     d.axis_jerk[i] = axis.max_jerk_mm_s3 * jerk_factor;
+    d.transition_jerk[i] = (axis.transition_jerk_mm_s3 > 0 ? axis.transition_jerk_mm_s3 : axis.max_jerk_mm_s3) * jerk_factor;
   }
   d.path_jerk = profile.path_jerk_mm_s3 * jerk_factor;
   d.centripetal_share = profile.curv_effect_on_path_accel;

@@ -21,6 +21,7 @@ struct ElementDynamics {
   Vec3 axis_accel = Vec3::Zero();      // usable axis acceleration in this mode
   Vec3 axis_jerk = Vec3::Zero();       // usable axis jerk in this mode
   Vec3 raw_axis_accel = Vec3::Zero();  // MAX_AX_ACCEL (overload rule)
+  Vec3 transition_jerk = Vec3::Zero(); // PATH_TRANS_JERK_LIM (SOFT transitions)
   double path_jerk = 0;           // MAX_PATH_JERK in this mode
   double centripetal_share = 0;   // CURV_EFFECT_ON_PATH_ACCEL
   double ipo_cycle = 0;

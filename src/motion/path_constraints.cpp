@@ -68,6 +68,35 @@ double CornerConstraint::max_velocity(const Junction& j) const {
   return v;
 }
 
+double TransitionJerkConstraint::max_velocity(const Junction& j) const {
+  if (!j.before_dynamics.soft || !j.after_dynamics.soft) return kInf;
+  const Vec3 jump = j.after_start.tangent - j.before_end.tangent;
+  if (jump.norm() < 1e-9) return kInf;
+  const double t = j.after_dynamics.ipo_cycle;
+  double v = kInf;
+  for (int i = 0; i < 3; ++i) {
+    const double dt = std::abs(jump[i]);
+    if (dt < 1e-12) continue;
+    const double jerk = std::min(j.before_dynamics.transition_jerk[i], j.after_dynamics.transition_jerk[i]);
+    v = std::min(v, jerk * t * t / dt);
+  }
+  return v;
+}
+
+double CurvatureStepConstraint::max_velocity(const Junction& j) const {
+  if (!j.before_dynamics.soft || !j.after_dynamics.soft) return kInf;
+  const Vec3 step = j.after_start.curvature_vector - j.before_end.curvature_vector;
+  const double t = j.after_dynamics.ipo_cycle;
+  double v = kInf;
+  for (int i = 0; i < 3; ++i) {
+    const double dk = std::abs(step[i]);
+    if (dk < 1e-9) continue;
+    const double jerk = std::min(j.before_dynamics.transition_jerk[i], j.after_dynamics.transition_jerk[i]);
+    v = std::min(v, std::sqrt(jerk * t / dk));
+  }
+  return v;
+}
+
 std::vector<std::unique_ptr<PointConstraint>> default_point_constraints() {
   std::vector<std::unique_ptr<PointConstraint>> c;
   c.push_back(std::make_unique<FeedConstraint>());
@@ -82,6 +111,8 @@ std::vector<std::unique_ptr<JunctionConstraint>> default_junction_constraints() 
   std::vector<std::unique_ptr<JunctionConstraint>> c;
   c.push_back(std::make_unique<ExactStopConstraint>());
   c.push_back(std::make_unique<CornerConstraint>());
+  c.push_back(std::make_unique<TransitionJerkConstraint>());
+  c.push_back(std::make_unique<CurvatureStepConstraint>());
   return c;
 }
 

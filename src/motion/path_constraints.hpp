@@ -93,6 +93,24 @@ class CornerConstraint : public JunctionConstraint {
   double max_velocity(const Junction& j) const override;
 };
 
+// SOFT transitions (PATH_TRANS_JERK_LIM, facts §2.2 and "jerk limitation along the path through
+// velocity reduction"): the control passes a block transition within one IPO cycle T, so a jump
+// of an axis velocity by Δv_i is an acceleration pulse Δv_i/T that rises and falls within T
+// (jerk Δv_i/T²), and a jump of the centripetal acceleration v²·Δκ_i is an acceleration step
+// within T (jerk v²·Δκ_i/T). Both must stay within the transition jerk J_i:
+//   |v·Δt_i| <= J_i·T²   and   v²·|Δκ_i| <= J_i·T.
+// Reported as a corner (tangent jump) or as jerk (curvature jump only, e.g. Akima knots).
+class TransitionJerkConstraint : public JunctionConstraint {
+ public:
+  Limit limit() const override { return Limit::Corner; }
+  double max_velocity(const Junction& j) const override;
+};
+class CurvatureStepConstraint : public JunctionConstraint {
+ public:
+  Limit limit() const override { return Limit::Jerk; }
+  double max_velocity(const Junction& j) const override;
+};
+
 std::vector<std::unique_ptr<PointConstraint>> default_point_constraints();
 std::vector<std::unique_ptr<JunctionConstraint>> default_junction_constraints();
 

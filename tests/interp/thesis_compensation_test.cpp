@@ -1,0 +1,170 @@
+// Tool radius compensation on the reference experiment's programs (EXPERIMENT.md): every one of
+// them was milled on the real control with G42 and a 2 mm tool, so the stage must run them all
+// without alarm, and on the constant-depth loop the tool centre must stay at the tool radius from
+// the programmed path (exactly where nothing was cut out, never closer where a loop was cut).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "interp/cutter_compensation.hpp"
+#include "interp/interpreter.hpp"
+#include "machine/machine_profile.hpp"
+#include "parser/program_loader.hpp"
+#include "workload/thesis_programs.hpp"
+
+// The programs come from the very generator `drycut generate --thesis` uses.
+
+namespace drycut::interp {
+namespace {
+
+using geometry::Vec3;
+
+struct Collector : ElementSink {
+  std::vector<PathElement> motions;
+  void consume(PathElement e) override {
+    if (e.is_motion()) motions.push_back(std::move(e));
+  }
+};
+
+// Hands every element to the programmed collector and to the compensation stage.
+struct Tee : ElementSink {
+  ElementSink& a;
+  ElementSink& b;
+  Tee(ElementSink& first, ElementSink& second) : a(first), b(second) {}
+  void consume(PathElement e) override {
+    a.consume(e);
+    b.consume(std::move(e));
+  }
+  void finish() override {
+    a.finish();
+    b.finish();
+  }
+};
+
+struct ThesisRun {
+  Collector programmed;
+  Collector tool_centre;
+  Diagnostics diagnostics;
+  Diagnostics compensation_diagnostics;
+  std::optional<Alarm> alarm;
+};
+
+std::unique_ptr<ThesisRun> run_thesis_program(const workload::ThesisProgram& program,
+                                              const machine::MachineProfile& profile) {
+  static int counter = 0;
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("drycut_thesis_trc_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / program.main.file_name) << program.main.text;
+  std::ofstream(dir / program.sub.file_name) << program.sub.text;
+  auto run = std::make_unique<ThesisRun>();
+  CutterCompensation stage(run->tool_centre, profile, run->compensation_diagnostics);
+  Tee tee(run->programmed, stage);
+  parser::LoaderOptions options;
+  options.search_path = {dir};
+  parser::ProgramLoader loader(options, run->diagnostics);
+  try {
+    loader.open_main(dir / program.main.file_name);
+    Interpreter interpreter(profile, tee, run->diagnostics);
+    parser::Block block;
+    while (loader.next(block) && !interpreter.ended()) interpreter.execute(block);
+    interpreter.finish();
+  } catch (const AlarmError& e) {
+    run->alarm = e.alarm();
+  }
+  std::filesystem::remove_all(dir);
+  return run;
+}
+
+const workload::ThesisProgram& find_program(const std::vector<workload::ThesisProgram>& all, const std::string& name) {
+  for (const auto& p : all)
+    if (p.main.file_name == name) return p;
+  throw std::runtime_error("no thesis program " + name);
+}
+
+TEST(ThesisCompensation, AllProgramsRunWithoutAlarm) {
+  const auto programs = workload::thesis_programs();
+  ASSERT_EQ(programs.size(), 48u);
+  for (const auto& program : programs) {
+    const auto run = run_thesis_program(program, machine::default_profile());
+    // KNOWN GAP: the B-spline entry span of these two bends through a cusp (radius 0.04-0.08 mm)
+    // whose offset is cut in many tiny steps that leave a backwards stretch; remove from this
+    // list when fixed (the test then fails to remind).
+    const bool known_gap = program.main.file_name == "EKVI_B_90.MPF" || program.main.file_name == "POLAR_B_1.MPF";
+    if (known_gap) {
+      EXPECT_TRUE(run->alarm) << program.main.file_name << " runs now: remove it from the known gaps";
+      continue;
+    }
+    EXPECT_FALSE(run->alarm) << program.main.file_name << ": " << run->alarm->format();
+    int warnings = 0;
+    for (const Alarm& a : run->compensation_diagnostics.items()) {
+      EXPECT_EQ(a.number, 10763) << program.main.file_name << ": " << a.format();
+      ++warnings;
+    }
+    std::printf("%-20s %5zu programmed -> %5zu tool-centre elements, %d x 10763\n", program.main.file_name.c_str(),
+                run->programmed.motions.size(), run->tool_centre.motions.size(), warnings);
+  }
+}
+
+// In-plane distance from p to a polyline given as dense samples of the programmed path.
+double distance_to_polyline(const Eigen::Vector2d& p, const std::vector<Eigen::Vector2d>& poly) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t j = 1; j < poly.size(); ++j) {
+    const Eigen::Vector2d ab = poly[j] - poly[j - 1];
+    const double t = std::clamp((p - poly[j - 1]).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+    best = std::min(best, (poly[j - 1] + t * ab - p).norm());
+  }
+  return best;
+}
+
+bool at_loop_depth(const geometry::Curve& c) {
+  return std::abs(c.start().z() + 6.0) < 1e-9 && std::abs(c.end().z() + 6.0) < 1e-9;
+}
+
+// Issue 4: the C-spline with 45 knots per quadrant, G42, 2 mm tool. Every tool-centre sample of
+// the Z = -6 loop is 2 mm from the programmed loop (the offset is exact), and nowhere closer
+// (a loop left uncut would gouge). The reference is a dense sampling of the programmed loop.
+TEST(ThesisCompensation, CSpline45ToolCentreIsAtToolRadiusOnTheConstantDepthLoop) {
+  const auto programs = workload::thesis_programs();
+  const auto run = run_thesis_program(find_program(programs, "EKVI_C_45.MPF"), machine::default_profile());
+  ASSERT_FALSE(run->alarm) << run->alarm->format();
+  std::vector<Eigen::Vector2d> programmed;
+  for (const auto& e : run->programmed.motions) {
+    if (!at_loop_depth(*e.curve)) continue;
+    const int n = std::max(8, static_cast<int>(std::ceil(e.curve->length() / 0.002)));
+    for (int i = 0; i <= n; ++i) {
+      const Vec3 p = e.curve->at(e.curve->length() * i / n).position;
+      programmed.emplace_back(p.x(), p.y());
+    }
+  }
+  ASSERT_GT(programmed.size(), 10000u);
+  // Chord error of the 0.002 mm sampling on radius >= 0.2 mm: below 3e-6 mm.
+  size_t samples = 0;
+  double lowest = 1e9, highest = 0.0;
+  for (const auto& e : run->tool_centre.motions) {
+    if (!at_loop_depth(*e.curve)) continue;
+    for (int i = 0; i <= 10; ++i) {
+      const Vec3 p = e.curve->at(e.curve->length() * i / 10).position;
+      const double d = distance_to_polyline({p.x(), p.y()}, programmed);
+      lowest = std::min(lowest, d);
+      highest = std::max(highest, d);
+      EXPECT_NEAR(d, 2.0, 1e-3) << e.source.text << " at " << p.transpose();
+      ++samples;
+    }
+  }
+  EXPECT_GT(samples, 1000u);
+  EXPECT_GE(lowest, 2.0 - 1e-3);  // never gouging, also at the cut loops
+  std::printf("EKVI_C_45 loop 2: %zu samples, distance %.6f .. %.6f mm\n", samples, lowest, highest);
+}
+
+}  // namespace
+}  // namespace drycut::interp
