@@ -2,6 +2,7 @@
 // one self-contained HTML page with the run's plots, summary, dips and alarms.
 #include "app/report_command.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,20 +20,16 @@ namespace drycut::app {
 std::optional<ReferenceContour> make_reference(const CurveOptions& options) {
   if (options.polar.empty() && options.parametric.empty() && options.points_csv.empty()) return std::nullopt;
   const workload::CurveSource curve = make_curve(options);
-  // Dense enough that the chord error is far below what the plot shows (~1e-6 mm on the thesis contour).
-  constexpr int kPoints = 20000;
-  std::vector<std::pair<double, double>> points;
-  points.reserve(kPoints);
-  for (int i = 0; i < kPoints; ++i) {
-    const double t = curve.t_begin + (curve.t_end - curve.t_begin) * i / kPoints;
-    const workload::Vec3 p = curve.point(t);
-    if (!p.allFinite()) throw UsageError("the reference curve is not finite at T = " + std::to_string(t));
-    points.emplace_back(p.x(), p.y());
-  }
   ReferenceContour r;
-  for (int i = 0; i < kPoints; i += 20) r.outline.push_back(points[static_cast<size_t>(i)]);
-  r.outline.push_back(points.front());
-  r.distance = std::make_shared<const report::ReferenceDistance>(std::move(points), true);
+  r.contour = std::make_shared<const workload::ReferenceContour>(curve);
+  const auto& vertices = r.contour->vertices();
+  for (const auto& v : vertices) {
+    if (!v.allFinite()) throw UsageError("the reference curve is not finite everywhere");
+  }
+  // About a thousand points are plenty to draw it.
+  const size_t step = std::max<size_t>(1, vertices.size() / 1000);
+  for (size_t i = 0; i < vertices.size(); i += step) r.outline.emplace_back(vertices[i].x(), vertices[i].y());
+  r.outline.emplace_back(vertices.front().x(), vertices.front().y());
   r.name = !options.polar.empty() ? "r = " + options.polar
            : !options.parametric.empty() ? options.parametric
                                          : options.points_csv;
@@ -43,8 +40,10 @@ ReportRun run_for_report(const ProgramOptions& options, const machine::MachinePr
                          const ReferenceContour* reference, bool samples) {
   report::RunPlotOptions plot_options;
   if (reference) {
-    auto distance = reference->distance;
-    plot_options.distance_to_reference = [distance](double x, double y) { return (*distance)(x, y); };
+    auto contour = reference->contour;
+    plot_options.distance_to_reference = [contour](double x, double y) {
+      return contour->nearest(workload::Vec2(x, y)).distance;
+    };
   }
   report::RunPlotCollector collector(plot_options);
   motion::PlannerOptions planner_options;

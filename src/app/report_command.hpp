@@ -10,13 +10,14 @@
 #include "app/curve_options.hpp"
 #include "app/program_pipeline.hpp"
 #include "motion/plan_result.hpp"
-#include "report/html_reference_distance.hpp"
 #include "report/html_run_plots.hpp"
+#include "workload/deviation_reference.hpp"
 
 namespace drycut::app {
 
 struct ReferenceContour {
-  std::shared_ptr<const report::ReferenceDistance> distance;
+  // The deviation module's contour (the same XY normal distance `drycut deviation` reports).
+  std::shared_ptr<const workload::ReferenceContour> contour;
   std::vector<std::pair<double, double>> outline;  // for drawing (about 1000 points)
   std::string name;
 };

@@ -251,6 +251,7 @@ void CutterCompensation::add_motion(const PathElement& element) {
     auto push_corner = [&](const CurvePtr& curve, bool gap_bridge) {
       PathElement corner = element;
       corner.kind = kind_of(curve, ElementKind::Line);
+      corner.inserted = true;
       window_.push_back(Item{std::move(corner), OffsetPiece(curve, 0.0, plane_), block_serial_, gap_bridge});
     };
     if (plane_.project(to - from).norm() >= kJoinTolerance) {
@@ -385,7 +386,19 @@ void CutterCompensation::emit_front() {
     last_direction_ = end_direction(item.piece->base(), plane_);
     last_offset_ = item.piece->offset();
   }
-  emit(std::move(item.element), item.piece->build_curve(), last_of_block);
+  CurvePtr curve = item.piece->build_curve();
+  apply_constant_contour_feed(item.element, item.piece->u_end() - item.piece->u_begin(), curve->length());
+  emit(std::move(item.element), std::move(curve), last_of_block);
+}
+
+void CutterCompensation::apply_constant_contour_feed(PathElement& element, double contour_mm, double centre_mm) const {
+  // CFC (the reset default): F holds on the programmed contour. Over a stretch whose tool-centre
+  // path is longer (outside) or shorter (inside) than the contour, the tool centre moves faster
+  // or slower by that ratio; SD42528 CUTCOM_DECEL_LIMIT bounds the slow-down on inside curves.
+  if (contour_mm <= kNegligibleLength || centre_mm <= kNegligibleLength) return;
+  const double scale = std::max(centre_mm / contour_mm, profile_.cutcom_decel_limit);
+  element.feed_scale = scale;
+  element.feed_mm_s *= scale;
 }
 
 void CutterCompensation::emit_passenger(PathElement element) {
@@ -407,6 +420,7 @@ void CutterCompensation::emit(PathElement element, CurvePtr curve, bool last_of_
     // Cut-out stretches and normal-axis moves can leave a step: join it by a straight move.
     PathElement connector = element;
     connector.kind = ElementKind::Line;
+    connector.inserted = true;
     connector.curve = std::make_shared<geometry::LineCurve>(tool_position_, curve->start());
     not_final(connector);
     downstream_.consume(std::move(connector));

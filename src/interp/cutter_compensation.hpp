@@ -88,6 +88,7 @@ class CutterCompensation : public ElementSink {
   void release_old_blocks(int check_blocks);
   void flush_window();
   void emit_front();
+  void apply_constant_contour_feed(PathElement& element, double contour_mm, double centre_mm) const;
   void emit(PathElement element, geometry::CurvePtr curve, bool last_of_block);
   void emit_passenger(PathElement element);
   void count_dummy(const PathElement& element);

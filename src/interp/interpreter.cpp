@@ -16,6 +16,13 @@ using parser::ValueMode;
 namespace {
 
 constexpr double kMmPerInch = 25.4;
+// Value ranges of the programming manual; beyond them the control raises an alarm (and drycut
+// would otherwise report absurd times or convert out of range).
+constexpr double kMinFeed = 0.001;          // F resolution (mm/min, inch/min, mm/rev)
+constexpr double kMaxDwellS = 999999.999;   // G4 F range
+constexpr double kMaxTurns = 999;           // TURN=0..999
+constexpr double kMaxToolNumber = 32000;    // T number
+constexpr double kMaxEdgeNumber = 32000;    // D number
 constexpr int kUnsupported = 990006;  // catalogued: function not modelled, would change the path
 constexpr int kNotModelled = 990002;  // catalogued warning: no effect on the path modelled
 
@@ -203,7 +210,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     const std::string& n = a.name;
     if (n == "F") {
       if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
-      if (a.value <= 0) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
+      // F has a resolution of 0.001: a smaller value is zero on the control (and would make
+      // absurd times here).
+      if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
       state_.feed = a.value;
       ctx.block_feed = a.value;
     } else if (n == "S") {
@@ -211,10 +220,15 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       if (a.value < 0) raise(ctx, 12160, "S must not be negative", a.column);
       state_.spindle_rpm = a.value;
     } else if (n == "T") {
+      // Checked before the conversion: a double outside long long's range is undefined there.
+      if (!(a.value >= 0 && a.value <= kMaxToolNumber))
+        raise(ctx, 12160, "T number must be 0..32000", a.column);
       state_.prepared_tool = std::to_string(static_cast<long long>(a.value));
     } else if (n == "D") {
+      // Range first: converting a double outside int's range is undefined behaviour.
+      if (!(a.value >= 0 && a.value <= kMaxEdgeNumber) || a.value != std::floor(a.value))
+        raise(ctx, 12160, "D must be a whole number >= 0", a.column);
       const int d = static_cast<int>(a.value);
-      if (d < 0 || d != a.value) raise(ctx, 12160, "D must be a whole number >= 0", a.column);
       if (d != 0 && !state_.active_tool) raise(ctx, 12160, "D" + std::to_string(d) + " without an active tool", a.column);
       state_.edge = d;
       state_.tool_radius_mm = 0;
@@ -286,7 +300,8 @@ Vector3d Interpreter::target_position(BlockContext& ctx) const {
 double Interpreter::feed_mm_s(const BlockContext& ctx) const {
   if (state_.feed <= 0) raise(ctx, 10860, "no F programmed for " + std::string(motion_mode_name(state_.motion)));
   if (state_.feed_per_rev) {
-    if (state_.spindle_rpm <= 0 || state_.spindle == SpindleState::Stopped)
+    // S below its 0.001 resolution is a standing spindle (and would give absurd times).
+    if (state_.spindle_rpm < kMinFeed || state_.spindle == SpindleState::Stopped)
       raise(ctx, 10860, "G95 feed per revolution needs a turning spindle (S and M3/M4)");
     return state_.feed * state_.spindle_rpm / 60.0;  // mm/rev * rev/min -> mm/s
   }
@@ -393,12 +408,15 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     const AddressWord* f = ctx.block.find_address("F");
     const AddressWord* s = ctx.block.find_address("S");
     if (f) {
-      if (f->value < 0) raise(ctx, 12160, "dwell time must not be negative", f->column);
+      if (f->value < 0 || f->value > kMaxDwellS)
+        raise(ctx, 12160, "dwell time must be 0..999999.999 s", f->column);
       e.dwell_s = f->value;
     } else if (s) {
       if (state_.spindle_rpm <= 0 || state_.spindle == SpindleState::Stopped)
         raise(ctx, 12160, "G4 S needs a turning spindle", s->column);
       e.dwell_s = s->value * 60.0 / state_.spindle_rpm;
+      if (!(e.dwell_s >= 0 && e.dwell_s <= kMaxDwellS))
+        raise(ctx, 12160, "dwell time must be 0..999999.999 s", s->column);
     } else {
       raise(ctx, 12080, "G4 needs F<seconds> or S<revolutions>");
     }
@@ -482,7 +500,7 @@ void Interpreter::emit_arc(BlockContext& ctx, const Vector3d& target) {
     const AddressWord* turn = ctx.block.find_address("TURN");
     int turns = 0;
     if (turn) {
-      if (turn->value < 0 || turn->value != std::floor(turn->value))
+      if (turn->value < 0 || turn->value > kMaxTurns || turn->value != std::floor(turn->value))
         raise(ctx, 14048, "TURN=" + std::to_string(turn->value), turn->column);
       turns = static_cast<int>(turn->value);
     }

@@ -55,7 +55,15 @@ struct PathElement {
   ElementKind kind = ElementKind::Line;
   geometry::CurvePtr curve;      // set for Line, Arc, SplineSpan
   bool rapid = false;            // G0
-  double feed_mm_s = 0.0;        // programmed path feed (mm/s), already converted from G94/G95
+  double feed_mm_s = 0.0;        // path feed (mm/s) of this curve, already converted from G94/G95
+  // Tool-centre length per programmed contour length (CFC: F holds on the contour, so the
+  // compensation stage scales feed_mm_s by it). Velocities are reported divided by it: the
+  // feed a programmer sees is the contour feed, as on the control's display.
+  double feed_scale = 1.0;
+  // An element the control inserts (G450 transition circle, intersection connector, join of a
+  // cut-out stretch). It is not an NC block of its own, so the block-change (short-block) limit
+  // does not apply to it.
+  bool inserted = false;
   DynamicsMode dynamics;
   double dwell_s = 0.0;          // Dwell
   StopKind stop = StopKind::None;

@@ -117,6 +117,8 @@ void read_program(const json& node, MachineProfile& p) {
     p.circle_error_const_mm = require_positive(*v, r.key_path("circle_error_const"));
   if (auto v = r.number("circle_error_factor"))
     p.circle_error_factor = require_non_negative(*v, r.key_path("circle_error_factor"));
+  if (auto v = r.number("cutcom_decel_limit"))
+    p.cutcom_decel_limit = require_range(*v, 0.0, 1.0, r.key_path("cutcom_decel_limit"));
   auto positive_int = [&](const char* key, int& field) {
     if (auto v = r.integer(key)) {
       if (*v < 1 || *v > 1000000) r.fail(key, "must be in [1, 1000000]");
@@ -242,6 +244,7 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"start_position_mm", {p.start_position.x(), p.start_position.y(), p.start_position.z()}},
                      {"circle_error_const_mm", p.circle_error_const_mm},
                      {"circle_error_factor", p.circle_error_factor},
+                     {"cutcom_decel_limit", p.cutcom_decel_limit},
                      {"cubic_spline_blocks", p.cubic_spline_blocks},
                      {"cubic_spline_global", p.cubic_spline_global},
                      {"cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks},

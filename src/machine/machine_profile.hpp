@@ -62,6 +62,7 @@ struct MachineProfile {
   bool cubic_spline_global = false;             // solve the C spline over the whole run instead
   int cutcom_maxnum_check_blocks = 3;           // MD20240
   int cutcom_maxnum_dummy_blocks = 3;           // MD20250
+  double cutcom_decel_limit = 0.0;              // SD42528: lowest tool-centre feed share on inside curves (CFC)
 
   const Tool* find_tool(const std::string& name) const {
     for (const auto& t : tools)

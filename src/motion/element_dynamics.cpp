@@ -26,6 +26,7 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   d.centripetal_share = profile.curv_effect_on_path_accel;
   d.ipo_cycle = profile.ipo_cycle_s;
   d.short_block_factor = profile.short_block_factor;
+  d.inserted = element.inserted;
   d.ovl_factor = profile.max_accel_ovl_factor;
   return d;
 }

@@ -26,6 +26,7 @@ struct ElementDynamics {
   double centripetal_share = 0;   // CURV_EFFECT_ON_PATH_ACCEL
   double ipo_cycle = 0;
   double short_block_factor = 0;
+  bool inserted = false;          // control-inserted element: no short-block limit
   double ovl_factor = 1;
 };
 

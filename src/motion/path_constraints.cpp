@@ -1,6 +1,7 @@
 #include "motion/path_constraints.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace drycut::motion {
 namespace {
@@ -42,6 +43,7 @@ double CurvatureJerkConstraint::max_velocity(const ElementDynamics& d, const Cur
 }
 
 double ShortBlockConstraint::max_velocity(const ElementDynamics& d, const CurvePoint&) const {
+  if (d.inserted) return std::numeric_limits<double>::infinity();
   return d.short_block_factor * d.length / d.ipo_cycle;
 }
 

@@ -312,6 +312,11 @@ void Planner::commit_front() {
   front_velocity_ = v;
   front_kind_ = kind;
 
+  // Reported feeds are contour feeds (CFC): tool-centre velocity / feed_scale.
+  const double to_contour = e.feed_scale > 0 ? 1.0 / e.feed_scale : 1.0;
+  v_max *= to_contour;
+  v_min *= to_contour;
+  if (cut_min < kInf) cut_min *= to_contour;
   timing.time_s = time;
   timing.length_mm = length;
   timing.v_max_mm_s = v_max;
@@ -327,7 +332,7 @@ void Planner::commit_front() {
     if (cut_min < kInf) {
       summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_min) : cut_min;
       any_cutting_ = true;
-      dips_.add(e.source, e.feed_mm_s, cut_min, cut_kind);
+      dips_.add(e.source, e.feed_mm_s * to_contour, cut_min, cut_kind);
     }
   } else if (w.segment_count > 0) {
     dips_.interrupt();

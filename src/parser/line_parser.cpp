@@ -1,6 +1,8 @@
 #include "parser/line_parser.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "parser/expression_parser.hpp"
@@ -16,7 +18,11 @@ bool split_letters_digits(std::string_view name, std::string_view& letters, int6
   if (i == 0 || i == name.size()) return false;
   letters = name.substr(0, i);
   const auto r = std::from_chars(name.data() + i, name.data() + name.size(), value);
-  return r.ec == std::errc() && r.ptr == name.data() + name.size();
+  if (r.ptr != name.data() + name.size()) return false;
+  // All digits but too many for the integer: still a letter+number word ("X1000...0"), not a
+  // name; the saturated value makes G/M/L/P/N words fail their range checks.
+  if (r.ec == std::errc::result_out_of_range) value = std::numeric_limits<int64_t>::max();
+  return r.ec == std::errc() || r.ec == std::errc::result_out_of_range;
 }
 
 bool is_block_number_name(std::string_view name, int64_t& value) {
@@ -345,7 +351,8 @@ void LineParser::parse_words(ParsedLine& out) {
             item.kind = ItemKind::Address;
             // The digits as written: "X0012" is 12, value parsed from the text, not the int.
             double v = 0;
-            std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v);
+            if (std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v).ec != std::errc())
+              throw LineError(12080, t.column + 1, "malformed number " + quoted(t.text.substr(1)));
             item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, t.column + 1, kNoExpr, kNoExpr, v, t.text.substr(1)});
           }
         }
@@ -364,7 +371,8 @@ void LineParser::parse_words(ParsedLine& out) {
         const double v = sign * num.number;
         const char letter = t.text[0];
         if (letter == 'G' || letter == 'M' || letter == 'L' || letter == 'P' || letter == 'N' || letter == 'R') {
-          if (letter == 'N' || letter == 'R' || v != static_cast<double>(static_cast<int64_t>(v)) || v < 0)
+          // Range before the conversion: a double beyond int64 is undefined behaviour there.
+          if (letter == 'N' || letter == 'R' || v < 0 || v >= 9.2e18 || v != std::trunc(v))
             throw LineError(12080, t.column, "malformed " + std::string(t.text) + " word");
           item.code = static_cast<int64_t>(v);
           item.kind = letter == 'G' ? ItemKind::G : letter == 'M' ? ItemKind::M : letter == 'L' ? ItemKind::LCall : ItemKind::Passes;

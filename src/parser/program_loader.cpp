@@ -340,7 +340,10 @@ bool ProgramLoader::execute_words(Block& out) {
         break;
       case ItemKind::Assign: {
         if (item.name == "P" && item.index == kNoExpr) {
-          passes = static_cast<uint64_t>(std::max(1.0, eval(item.expr)));
+          // At most 9999 passes; checked before the conversion (out of range it is undefined).
+          const double p = eval(item.expr);
+          if (!(p <= 9999)) throw LineError(12160, item.column, "P (passes) must be at most 9999");
+          passes = static_cast<uint64_t>(std::max(1.0, p));
           break;
         }
         if (item.index == kNoExpr && is_address(item.name) && !f.find_local(item.name)) {

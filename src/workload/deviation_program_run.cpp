@@ -1,0 +1,78 @@
+#include "workload/deviation_program_run.hpp"
+
+#include "interp/cutter_compensation.hpp"
+#include "interp/interpreter.hpp"
+#include "parser/program_loader.hpp"
+
+namespace drycut::workload {
+namespace {
+
+// Hands every element to the programmed sampler and to the compensation branch; the branch
+// is dropped at its first alarm.
+class TeeSink : public interp::ElementSink {
+ public:
+  TeeSink(interp::ElementSink& programmed, interp::ElementSink* compensation, std::optional<Alarm>& branch_alarm)
+      : programmed_(programmed), compensation_(compensation), branch_alarm_(branch_alarm) {}
+
+  void consume(interp::PathElement element) override {
+    if (compensation_) guarded([&] { compensation_->consume(element); });
+    programmed_.consume(std::move(element));
+  }
+  void finish() override {
+    if (compensation_) guarded([&] { compensation_->finish(); });
+    programmed_.finish();
+  }
+
+ private:
+  template <class F>
+  void guarded(F&& f) {
+    try {
+      f();
+    } catch (const AlarmError& e) {
+      branch_alarm_ = e.alarm();
+      compensation_ = nullptr;
+    }
+  }
+  interp::ElementSink& programmed_;
+  interp::ElementSink* compensation_;
+  std::optional<Alarm>& branch_alarm_;
+};
+
+}  // namespace
+
+SampledProgram sample_program(const std::filesystem::path& main_program, const machine::MachineProfile& profile,
+                              const SampleOptions& options) {
+  SampledProgram result;
+  PathSampler programmed(options.step_mm), tool_centre(options.step_mm);
+  Diagnostics compensation_diagnostics;
+  std::optional<interp::CutterCompensation> compensation;
+  if (options.tool_centre) compensation.emplace(tool_centre, profile, compensation_diagnostics);
+  TeeSink tee(programmed, compensation ? &*compensation : nullptr, result.compensation_alarm);
+
+  parser::LoaderOptions loader_options;
+  loader_options.search_path = options.search_path;
+  loader_options.max_steps = options.max_steps;
+  parser::ProgramLoader loader(loader_options, result.diagnostics);
+  loader.open_main(main_program);
+  interp::Interpreter interpreter(profile, tee, result.diagnostics);
+  parser::Block block;
+  try {
+    while (loader.next(block)) {
+      interpreter.execute(block);
+      if (interpreter.ended()) break;
+    }
+  } catch (const AlarmError& e) {
+    result.program_alarm = e.alarm();
+  }
+  try {
+    interpreter.finish();
+  } catch (const AlarmError& e) {
+    if (!result.program_alarm) result.program_alarm = e.alarm();
+  }
+  for (const Alarm& a : compensation_diagnostics.items()) result.diagnostics.report(a);
+  result.programmed = programmed.elements();
+  if (options.tool_centre) result.tool_centre = tool_centre.elements();
+  return result;
+}
+
+}  // namespace drycut::workload

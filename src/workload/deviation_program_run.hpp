@@ -1,0 +1,35 @@
+#pragma once
+// Runs a part program through loader -> interpreter (-> tool radius compensation) and samples
+// both the programmed path and the tool-centre path. An alarm ends the programmed run as on the
+// control; an alarm in the compensation only ends the tool-centre branch, so the programmed
+// contour can still be judged when the compensation cannot follow it.
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "machine/alarm.hpp"
+#include "machine/machine_profile.hpp"
+#include "workload/deviation_path_sampler.hpp"
+
+namespace drycut::workload {
+
+struct SampledProgram {
+  std::vector<SampledElement> programmed;
+  std::vector<SampledElement> tool_centre;
+  std::optional<Alarm> program_alarm;       // the run stopped here
+  std::optional<Alarm> compensation_alarm;  // the tool-centre path stops here
+  Diagnostics diagnostics;                  // warnings of both branches
+};
+
+struct SampleOptions {
+  std::vector<std::filesystem::path> search_path;
+  double step_mm = 0.01;
+  bool tool_centre = true;
+  uint64_t max_steps = 100'000'000;
+};
+
+// Throws UsageError when the program cannot be read.
+SampledProgram sample_program(const std::filesystem::path& main_program, const machine::MachineProfile& profile,
+                              const SampleOptions& options);
+
+}  // namespace drycut::workload
