@@ -1,5 +1,6 @@
 #include "report/html_compare_report.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -98,8 +99,15 @@ std::string render_compare_report(const std::vector<CompareRow>& rows,
   SvgChart chart({"compare-paths", "Programmed paths overlaid (XY)", "X [mm]", "Y [mm]", 1100, 820, true, false, 0});
   if (!reference.empty()) {
     std::vector<XY> ref;
-    for (const auto& [x, y] : reference) ref.push_back({x, y});
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& [x, y] : reference) {
+      ref.push_back({x, y});
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
     chart.add_line(std::move(ref), "#9a9a9a", 1.0, "reference (" + reference_name + ")", true);
+    // Frame the contour; approach and retract moves far from it are clipped.
+    const double margin = 0.12 * std::max(x1 - x0, y1 - y0);
+    chart.set_view(x0 - margin, x1 + margin, y0 - margin, y1 + margin);
   }
   for (size_t i = 0; i < rows.size(); ++i) {
     std::vector<XY> pts;

@@ -84,8 +84,16 @@ std::string top_view(const RunReportInput& in, const std::vector<size_t>& worst)
                   820, true, false, 0});
   if (!in.reference.empty()) {
     std::vector<XY> ref;
-    for (const auto& [x, y] : in.reference) ref.push_back({x, y});
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& [x, y] : in.reference) {
+      ref.push_back({x, y});
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
     chart.add_line(std::move(ref), "#9a9a9a", 1.0, "reference contour (" + in.reference_name + ")", true);
+    // The contour is what matters: frame it (with room for the tool radius); approach and
+    // retract moves far away are clipped.
+    const double margin = 0.12 * std::max(x1 - x0, y1 - y0);
+    chart.set_view(x0 - margin, x1 + margin, y0 - margin, y1 + margin);
   }
   std::vector<XY> programmed;
   for (const auto& p : in.plots.programmed_path) programmed.push_back({p.x, p.y});
@@ -127,7 +135,7 @@ std::string velocity_chart(const RunReportInput& in, const std::vector<size_t>& 
   for (const auto& f : in.plots.feed) feed.push_back({by_time ? f.t : f.s, f.v * kMinPerS});
   for (const auto& p : in.plots.tool_path) velocity.push_back({by_time ? p.t : p.s, p.v * kMinPerS});
   chart.add_line(std::move(velocity), "#2166ac", 1.4, "path velocity");
-  chart.add_line(std::move(feed), "#d6604d", 1.6, "programmed F", true);
+  chart.add_line(std::move(feed), "#d6604d", 1.6, "F commanded at the tool centre", true);
   for (size_t r = 0; r < worst.size() && r < in.annotated_dips; ++r) {
     const size_t i = worst[r];
     if (i < in.dip_locations.size() && in.dip_locations[i].known)
@@ -194,10 +202,10 @@ std::string render_run_report(const RunReportInput& in) {
   o += "<h2>Summary</h2>\n" + summary_table(in);
   o += "<h2>Alarms and warnings</h2>\n" + diagnostics_table(in);
   o += "<h2>Top view</h2>\n" + top_view(in, worst);
-  o += "<p class=\"note\">Equal scale in X and Y. Colour: path velocity of the tool centre; rapids are shown at the "
-       "top colour. Numbered rings: the worst feed dips (hover for details), listed in the table below.</p>\n";
+  o += "<p class=\"note\">Equal scale in X and Y; with a reference contour the view frames the contour and clips moves far from it. "
+       "Colour: path velocity of the tool centre; faster than the highest cutting F (rapids) shows the top colour. Numbered rings: the worst feed dips (hover for details), listed in the table below.</p>\n";
   o += "<h2>Path velocity</h2>\n" + velocity_chart(in, worst, true) + velocity_chart(in, worst, false);
-  o += "<p class=\"note\">Dashed: programmed F of the cutting blocks (gaps: rapids, dwells). Rapid velocities above the "
+  o += "<p class=\"note\">Dashed: the F the planner was given for the tool centre (the programmed F, as the compensation stage hands it on; gaps: rapids). Rapid velocities above the "
        "top of the scale are clipped.</p>\n";
   if (in.plots.has_deviation)
     o += "<h2>Deviation along the contour</h2>\n" + deviation_chart(in) +

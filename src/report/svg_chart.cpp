@@ -86,6 +86,7 @@ void SvgChart::set_colour_bar(double lo, double hi, std::string label) {
 
 SvgChart::Bounds SvgChart::data_bounds() const {
   constexpr double inf = std::numeric_limits<double>::infinity();
+  if (view_) return view_bounds_;
   Bounds b{inf, -inf, inf, -inf};
   auto take = [&](const std::vector<XY>& pts) {
     for (const XY& p : pts)

@@ -38,6 +38,12 @@ class SvgChart {
   // A vertical colour bar right of the plot for add_coloured_line (values lo..hi, unit label).
   void set_colour_bar(double lo, double hi, std::string label);
 
+  // Show this data range instead of fitting all data (what lies outside is clipped).
+  void set_view(double x0, double x1, double y0, double y1) {
+    view_ = true;
+    view_bounds_ = {x0, x1, y0, y1};
+  }
+
   bool empty() const { return lines_.empty() && coloured_.empty() && markers_.empty(); }
   std::string render() const;
 
@@ -71,6 +77,8 @@ class SvgChart {
   Bounds data_bounds() const;
 
   ChartOptions options_;
+  bool view_ = false;
+  Bounds view_bounds_{0, 1, 0, 1};
   std::vector<Line> lines_;
   std::vector<ColouredLine> coloured_;
   std::vector<Markers> markers_;

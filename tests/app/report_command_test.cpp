@@ -51,9 +51,9 @@ TEST(ReportCommand, DeviationFromAReferenceCircle) {
 
 TEST(ReportCommand, FileStaysSmallForLongPrograms) {
   TempDir dir("drycut_report_cli_long");
-  // 20000 short blocks on a zigzag: the page must not grow with the block count.
+  // 20000 short blocks on a zigzag (X up to 400 mm, inside the travel limits): the page must not grow with the block count.
   std::string text = "N1 G0 X0 Y0\nG1 F3000\n";
-  for (int i = 1; i <= 20000; ++i) text += "X" + std::to_string(i * 0.05) + " Y" + std::to_string(i % 2) + "\n";
+  for (int i = 1; i <= 20000; ++i) text += "X" + std::to_string(i * 0.02) + " Y" + std::to_string(i % 2) + "\n";
   text += "M30\n";
   write_file(dir.path / "LONG.MPF", text);
   const fs::path html = dir.path / "long.html";
