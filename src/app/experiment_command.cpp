@@ -15,7 +15,6 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
-#include "interp/cutter_compensation.hpp"
 #include "measured_equidistant_json.hpp"
 #include "motion/planner.hpp"
 #include "workload/thesis_programs.hpp"
@@ -103,12 +102,10 @@ Row run_one(const workload::ThesisProgram& p, const std::filesystem::path& dir, 
   options.quiet = true;
   SubprogramTime contour;
   motion::Planner planner(profile, contour);
-  Diagnostics compensation_diagnostics;
-  interp::CutterCompensation compensation(planner, profile, compensation_diagnostics);
-  PipelineOutcome outcome = run_program(options, profile, compensation);
+  PipelineOutcome outcome = run_program_tool_centre(options, profile, planner);
   for (const auto& a : outcome.diagnostics.items())
     if (a.severity == Severity::Alarm && row.alarm.empty()) row.alarm = a.format();
-  row.warnings = outcome.diagnostics.warning_count() + compensation_diagnostics.warning_count();
+  row.warnings = outcome.diagnostics.warning_count();
   const auto& s = planner.summary();
   row.time_s = s.time_s;
   row.time_after_m0_s = s.time_after_m0_s;

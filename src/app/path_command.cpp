@@ -5,7 +5,6 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
-#include "interp/cutter_compensation.hpp"
 #include "report/element_listing.hpp"
 #include "report/path_csv_writer.hpp"
 
@@ -46,15 +45,8 @@ void register_path(CLI::App& app) {
       std::unique_ptr<interp::ElementSink> writer;
       if (options->elements) writer = std::make_unique<report::ElementListingWriter>(out);
       else writer = std::make_unique<report::PathCsvWriter>(out, options->step_mm);
-      PipelineOutcome outcome;
-      if (options->tool_centre) {
-        Diagnostics compensation_diagnostics;
-        interp::CutterCompensation compensation(*writer, profile, compensation_diagnostics);
-        outcome = run_program(options->program, profile, compensation);
-        for (const auto& a : compensation_diagnostics.items()) outcome.diagnostics.report(a);
-      } else {
-        outcome = run_program(options->program, profile, *writer);
-      }
+      PipelineOutcome outcome = options->tool_centre ? run_program_tool_centre(options->program, profile, *writer)
+                                                     : run_program(options->program, profile, *writer);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut path: %s\n", e.what());

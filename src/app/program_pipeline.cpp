@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/exit_code.hpp"
+#include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/program_loader.hpp"
 #include "report/progress_display.hpp"
@@ -63,6 +64,15 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
   }
   outcome.blocks = loader.blocks_executed();
   outcome.programs_used = loader.programs_used();
+  return outcome;
+}
+
+PipelineOutcome run_program_tool_centre(const ProgramOptions& options, const machine::MachineProfile& profile,
+                                        interp::ElementSink& sink) {
+  Diagnostics compensation_diagnostics;
+  interp::CutterCompensation compensation(sink, profile, compensation_diagnostics);
+  PipelineOutcome outcome = run_program(options, profile, compensation);
+  for (const auto& a : compensation_diagnostics.items()) outcome.diagnostics.report(a);
   return outcome;
 }
 

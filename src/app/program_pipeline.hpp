@@ -40,6 +40,11 @@ struct PipelineOutcome {
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
                             interp::ElementSink& sink);
 
+// The same through the tool radius compensation stage: the sink receives the tool-centre path,
+// and the stage's warnings (10763 ...) join the outcome's diagnostics.
+PipelineOutcome run_program_tool_centre(const ProgramOptions& options, const machine::MachineProfile& profile,
+                                        interp::ElementSink& sink);
+
 // Prints warnings and alarms on stderr and returns the exit code (0 clean, 1 alarms).
 int report_outcome(const PipelineOutcome& outcome);
 

@@ -8,7 +8,6 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
-#include "interp/cutter_compensation.hpp"
 #include "motion/planner.hpp"
 #include "report/run_report_writer.hpp"
 #include "report/trace_csv_writer.hpp"
@@ -81,15 +80,7 @@ void register_run(CLI::App& app) {
       motion::PlannerOptions planner_options;
       planner_options.emit_samples = tracer != nullptr;
       motion::Planner planner(profile, observer, planner_options);
-      PipelineOutcome outcome;
-      {
-        // The compensation stage sits between interpreter and planner; it reports into the
-        // run's diagnostics, so it is built inside run_program's lifetime via a forwarding sink.
-        Diagnostics compensation_diagnostics;
-        interp::CutterCompensation compensation(planner, profile, compensation_diagnostics);
-        outcome = run_program(o->program, profile, compensation);
-        for (const auto& a : compensation_diagnostics.items()) outcome.diagnostics.report(a);
-      }
+      PipelineOutcome outcome = run_program_tool_centre(o->program, profile, planner);
       const motion::PlanSummary& summary = planner.summary();
       if (report) report->finish(summary, outcome.diagnostics);
       print_summary(*o, profile, summary);

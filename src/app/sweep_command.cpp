@@ -13,7 +13,6 @@
 #include "app/curve_options.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
-#include "interp/cutter_compensation.hpp"
 #include "motion/planner.hpp"
 #include "workload/sweep.hpp"
 
@@ -37,12 +36,7 @@ std::optional<double> planned_time(const std::filesystem::path& main, const mach
   options.quiet = true;
   motion::PlanObserver none;
   motion::Planner planner(profile, none);
-  Diagnostics compensation_diagnostics;
-  PipelineOutcome outcome;
-  {
-    interp::CutterCompensation compensation(planner, profile, compensation_diagnostics);
-    outcome = run_program(options, profile, compensation);
-  }
+  const PipelineOutcome outcome = run_program_tool_centre(options, profile, planner);
   if (outcome.alarm) return std::nullopt;
   return planner.summary().time_after_m0_s;
 }
