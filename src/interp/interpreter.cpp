@@ -383,18 +383,26 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (has_axis || full_circle) {
     const Vector3d target = target_position(ctx);
     check_limits(ctx, target);
-    if (spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode())) {
-      // The run ends here; ETAN needs the direction this block starts in.
+    const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
+    if (run_ends && (state_.spline_mode() || state_.motion == MotionMode::ArcTangent)) {
+      // A new spline type, or CT (which is tangent to the run's end itself): ETAN takes the chord.
       Vector3d direction = target - position_;
       if (direction.norm() > 1e-12) direction.normalize();
       end_spline_run(direction.norm() > 0 ? &direction : nullptr);
     }
     if (state_.spline_mode()) {
       add_spline_point(ctx, target);
-    } else if (arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent) {
-      emit_arc(ctx, target);
     } else {
-      emit_line(ctx, target);
+      const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
+      PathElement e = arc ? build_arc(ctx, target) : build_line(ctx, target);
+      if (spline_.active()) {
+        // The run ends here; ETAN takes the direction this block starts in.
+        Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
+        end_spline_run(direction.norm() > 0 ? &direction : nullptr);
+      }
+      position_ = e.curve->end();
+      check_limits(ctx, position_);
+      emit(std::move(e));
     }
   } else if (stops && spline_.active()) {
     end_spline_run(nullptr);
@@ -456,17 +464,16 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   }
 }
 
-void Interpreter::emit_line(BlockContext& ctx, const Vector3d& target) {
+PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) const {
   PathElement e = element_template(ctx, ElementKind::Line);
   e.rapid = state_.motion == MotionMode::Rapid;
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx);
   e.label = e.rapid ? "G0" : "G1";
   e.curve = std::make_shared<geometry::LineCurve>(position_, target);
-  position_ = target;
-  emit(std::move(e));
+  return e;
 }
 
-void Interpreter::emit_arc(BlockContext& ctx, const Vector3d& target) {
+PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) const {
   const double unit = state_.inch ? kMmPerInch : 1.0;
   const Vector3d frame = frame_offset(ctx);
   const geometry::Plane plane = to_geometry_plane(state_.plane);
@@ -529,9 +536,7 @@ void Interpreter::emit_arc(BlockContext& ctx, const Vector3d& target) {
   }
   if (result.alarm != 0) raise(ctx, result.alarm, result.detail);
   e.curve = result.curve;
-  position_ = e.curve->end();
-  check_limits(ctx, position_);
-  emit(std::move(e));
+  return e;
 }
 
 void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {

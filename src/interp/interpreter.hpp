@@ -46,8 +46,9 @@ class Interpreter {
   void apply_addresses(BlockContext& ctx);
   void apply_m_words(BlockContext& ctx);
   void execute_motion(BlockContext& ctx);
-  void emit_line(BlockContext& ctx, const Eigen::Vector3d& target);
-  void emit_arc(BlockContext& ctx, const Eigen::Vector3d& target);
+  // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
+  PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target) const;
+  PathElement build_arc(BlockContext& ctx, const Eigen::Vector3d& target) const;
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);

@@ -153,3 +153,20 @@ TEST(InterpreterSplines, BadWeightIsAnAlarmAtItsBlock) {
 
 }  // namespace
 }  // namespace drycut::interp::testing
+
+namespace drycut::interp::testing {
+namespace {
+
+TEST(InterpreterSplines, EtanBeforeAnArcTakesTheArcsStartTangent) {
+  // G3 from (25,6) to (35,6) with CR=5: centre (30,6), counter-clockwise, leaving (25,6) along -Y.
+  auto r = run_program("G0 X0 Y0 Z0\nG1 X10 Y0 F600\nBTAN ETAN\nCSPLINE\nX15 Y3\nX20 Y2\nX25 Y6\nG3 X35 Y6 CR=5\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  auto m = r->sink.motions();
+  ASSERT_EQ(m.size(), 6u);
+  const auto& last_span = m[4];
+  EXPECT_TRUE(near(last_span.curve->at(last_span.curve->length()).tangent, Eigen::Vector3d(0, -1, 0), 1e-6));
+  EXPECT_TRUE(near(m[5].curve->at(0).tangent, Eigen::Vector3d(0, -1, 0), 1e-9));
+}
+
+}  // namespace
+}  // namespace drycut::interp::testing
