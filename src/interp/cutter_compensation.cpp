@@ -1,8 +1,6 @@
 #include "interp/cutter_compensation.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -335,12 +333,6 @@ bool CutterCompensation::cut_out_is_defective(size_t earlier, size_t later, cons
 }
 
 void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earlier, double u_later) {
-  if (std::getenv("TRCDBG")) {
-    const Vec3 a = window_[earlier].piece->position(u_earlier), b = window_[later].piece->position(u_later);
-    std::fprintf(stderr, "CUT %s:%u x %s:%u dz=%.4f a=(%.4f %.4f %.4f) items=%zu\n", window_[earlier].element.source.file_name().c_str(),
-      window_[earlier].element.source.line, window_[later].element.source.file_name().c_str(), window_[later].element.source.line,
-      b.z()-a.z(), a.x(), a.y(), a.z(), later-earlier); std::fprintf(stderr, "   blocks %d %d serial %d\n", window_[earlier].block, window_[later].block, block_serial_);
-  }
   OffsetPiece& first = *window_[earlier].piece;
   first.trim(first.u_begin(), u_earlier);
   OffsetPiece& second = *window_[later].piece;
