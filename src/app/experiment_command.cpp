@@ -163,6 +163,11 @@ int run_experiment(const ExperimentOptions& o) {
   for (const Row& r : rows) {
     std::string notes = r.alarm.empty() ? "" : "ALARM";
     if (!r.alarm.empty()) ++alarms;
+    if (!r.measured && !r.alarm.empty()) {
+      std::printf("%-9s %-8s %5zu  %8s %6s  %8s %6s  %8s  %6s %6s %5s  %s\n", r.set.c_str(), r.method.c_str(), r.knots,
+                  "-", "", "-", "", "-", "-", "-", "", notes.c_str());
+      continue;
+    }
     if (!r.measured) {
       std::printf("%-9s %-8s %5zu  %8.2f %6s  %8.2f %6s  %8s  %6.0f %6s %5s  %s\n", r.set.c_str(), r.method.c_str(),
                   r.knots, r.time_after_m0_s, "", r.to_contour_end_s, "", "-", r.contour_min_feed_mm_min, "-", "",
