@@ -13,7 +13,7 @@ kind=$1; n=$2; file=$3
 mkdir -p "$(dirname "$file")"
 awk -v n="$n" -v kind="$kind" 'BEGIN {
   pi = 3.141592653589793
-  if (kind == "rs274") print "G17 G21 G90 G64 G94"
+  if (kind == "rs274") print "G17 G90 G64 G94"   # LinuxCNC defaults to mm; G21 is not SINUMERIK
   else print "G54 G17 G90 G64 SOFT G94"
   theta = 0; r = 20
   printf "G0 X%.3f Y%.3f Z5\n", r, 0

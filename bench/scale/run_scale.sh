@@ -7,7 +7,8 @@
 #
 # Usage: bench/scale/run_scale.sh [drycut binary] [figures file]
 # Environment: SIZES="1000000 10000000" (G1 program sizes), ASPLINE_SIZE=1000000,
-#              COMMANDS="check path run", PEER=1 (0 skips rs274), WORK=/tmp/drycut_scale
+#              COMMANDS="check path run", PEER=1 (0 skips rs274), PEER_SIZE=1000000,
+#              WORK=/tmp/drycut_scale
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 DRYCUT=$(readlink -f "${1:-build/drycut}")
@@ -17,6 +18,7 @@ SIZES=${SIZES:-"1000000 10000000"}
 ASPLINE_SIZE=${ASPLINE_SIZE:-1000000}
 COMMANDS=${COMMANDS:-"check path run"}
 PEER=${PEER:-1}
+PEER_SIZE=${PEER_SIZE:-1000000}
 mkdir -p "$WORK"
 : > "$OUT"
 
@@ -72,7 +74,7 @@ if [ "$PEER" = 1 ]; then
     fi
   fi
   if command -v rs274 > /dev/null; then
-    n=${SIZES%% *}
+    n=$PEER_SIZE
     f="$WORK/rs274_${n}.ngc"
     "$here/generate_programs.sh" rs274 "$n" "$f"
     # Both read the same file; drycut plans it fully (run), rs274 only interprets it.
