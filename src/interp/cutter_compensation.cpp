@@ -338,6 +338,9 @@ void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earl
   OffsetPiece& second = *window_[later].piece;
   second.trim(u_later, second.u_end());
   const int keep_a = window_[earlier].block, keep_b = window_[later].block;
+  // Copied before the loop below moves the kept items out of the window.
+  const BlockRef from = window_[earlier].element.source;
+  const BlockRef to = window_[later].element.source;
   std::vector<int> warned;
   std::deque<Item> kept;
   for (size_t i = 0; i < window_.size(); ++i) {
@@ -348,7 +351,10 @@ void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earl
       if (item.block != keep_a && item.block != keep_b &&
           std::find(warned.begin(), warned.end(), item.block) == warned.end()) {
         warned.push_back(item.block);
-        diagnostics_.warn(10763, "block skipped by bottleneck detection",
+        // The catalogue text already says "skipped"; the detail says where the path was cut.
+        diagnostics_.warn(10763,
+                          "the tool-centre path crosses itself between " + from.file_name() + ":" +
+                              std::to_string(from.line) + " and " + to.file_name() + ":" + std::to_string(to.line),
                           SourceLocation{item.element.source.file_name(), item.element.source.line, 0},
                           item.element.source.text);
       }

@@ -238,6 +238,9 @@ TEST(CutterCompensation, BottleneckSkipsTheShortStepWithWarning10763) {
   EXPECT_EQ(run.diagnostics.items()[0].severity, Severity::Warning);
   EXPECT_EQ(run.diagnostics.items()[0].where.line, 3u);
   EXPECT_EQ(run.diagnostics.items()[0].block, "N30");
+  // The detail names the two blocks whose tool-centre paths cross.
+  EXPECT_NE(run.diagnostics.items()[0].text.find("crosses itself between TEST.MPF:2 and TEST.MPF:4"), std::string::npos)
+      << run.diagnostics.items()[0].text;
 }
 
 TEST(CutterCompensation, BottleneckWithG451CutsAtTheIntersectionLine) {
