@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "motion/cube_root.hpp"
+
 namespace drycut::motion {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -37,7 +39,7 @@ double CurvatureJerkConstraint::max_velocity(const ElementDynamics& d, const Cur
   double v = kInf;
   for (int i = 0; i < 3; ++i) {
     const double r = std::abs(p.curvature_rate[i]);
-    if (r > 1e-15) v = std::min(v, std::cbrt(d.axis_jerk[i] / r));
+    if (r > 1e-15) v = std::min(v, cube_root(d.axis_jerk[i] / r));
   }
   return v;
 }

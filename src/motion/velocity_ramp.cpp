@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "motion/cube_root.hpp"
+
 namespace drycut::motion {
 namespace {
 
@@ -52,7 +54,7 @@ double ramp_reach(double v0, double distance, RampLimits l) {
     const double p = 2.0 * v0 / j, q = -distance / j;
     const double disc = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
     // The two Cardano cube roots multiply to -p/3, so one cbrt gives both (cbrt is a hot spot).
-    const double c = std::cbrt(-q / 2.0 + disc);
+    const double c = cube_root(-q / 2.0 + disc);
     const double u = c - p / (3.0 * c);
     return v0 + j * u * u;
   }
