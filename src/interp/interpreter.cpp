@@ -228,24 +228,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       // Range first: converting a double outside int's range is undefined behaviour.
       if (!(a.value >= 0 && a.value <= kMaxEdgeNumber) || a.value != std::floor(a.value))
         raise(ctx, 12160, "D must be a whole number >= 0", a.column);
-      const int d = static_cast<int>(a.value);
-      if (d != 0 && !state_.active_tool) raise(ctx, 12160, "D" + std::to_string(d) + " without an active tool", a.column);
-      state_.edge = d;
-      state_.tool_radius_mm = 0;
-      if (d != 0) {
-        const machine::Tool* tool = profile_.find_tool(*state_.active_tool);
-        if (!tool) {
-          char* end = nullptr;
-          long num = std::strtol(state_.active_tool->c_str(), &end, 10);
-          if (end && *end == '\0') tool = profile_.find_tool(static_cast<int>(num));
-        }
-        const machine::ToolEdge* edge = nullptr;
-        if (tool)
-          for (const auto& e : tool->edges)
-            if (e.d == d) edge = &e;
-        if (!edge) raise(ctx, 12160, "tool " + *state_.active_tool + " has no edge D" + std::to_string(d), a.column);
-        state_.tool_radius_mm = edge->radius_mm;
-      }
+      // With M6 in the same block the edge belongs to the new tool: selected after the change.
+      if (ctx.block.has_m(6)) continue;
+      select_edge(ctx, static_cast<int>(a.value), a.column);
     } else if (n == "SD") {
       if (a.value != 2 && a.value != 3) raise(ctx, 12160, "SD must be 2 or 3", a.column);
       state_.bspline_degree = static_cast<int>(a.value);
@@ -277,6 +262,28 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       default: break;  // M17 is the loader's; coolant and PLC functions take no path time
     }
   }
+}
+
+const machine::Tool* Interpreter::find_tool(const std::string& id) const {
+  // T="name" selects by name; T<n> by number (kept as its decimal text).
+  if (const machine::Tool* tool = profile_.find_tool(id)) return tool;
+  char* end = nullptr;
+  const long number = std::strtol(id.c_str(), &end, 10);
+  return end && *end == '\0' && !id.empty() ? profile_.find_tool(static_cast<int>(number)) : nullptr;
+}
+
+void Interpreter::select_edge(const BlockContext& ctx, int d, uint32_t column) {
+  if (d != 0 && !state_.active_tool) raise(ctx, 12160, "D" + std::to_string(d) + " without an active tool", column);
+  state_.edge = d;
+  state_.tool_radius_mm = 0;
+  if (d == 0) return;
+  const machine::Tool* tool = find_tool(*state_.active_tool);
+  const machine::ToolEdge* edge = nullptr;
+  if (tool)
+    for (const auto& e : tool->edges)
+      if (e.d == d) edge = &e;
+  if (!edge) raise(ctx, 12160, "tool " + *state_.active_tool + " has no edge D" + std::to_string(d), column);
+  state_.tool_radius_mm = edge->radius_mm;
 }
 
 Vector3d Interpreter::frame_offset(const BlockContext& ctx) const {
@@ -433,18 +440,15 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   }
   if (ctx.tool_change) {
     if (!state_.prepared_tool) raise(ctx, 12160, "M6 without a tool selected by T");
-    if (!profile_.find_tool(*state_.prepared_tool)) {
-      char* end = nullptr;
-      long num = std::strtol(state_.prepared_tool->c_str(), &end, 10);
-      if (!(end && *end == '\0' && profile_.find_tool(static_cast<int>(num))))
-        raise(ctx, 12160, "tool '" + *state_.prepared_tool + "' is not in the machine profile's tool table");
-    }
+    const machine::Tool* tool = find_tool(*state_.prepared_tool);
+    if (!tool) raise(ctx, 12160, "tool '" + *state_.prepared_tool + "' is not in the machine profile's tool table");
     state_.active_tool = state_.prepared_tool;
-    // MD20270 CUTTING_EDGE_DEFAULT = 1: after a change without D the first edge is active.
-    if (!ctx.block.find_address("D")) {
+    if (const AddressWord* d = ctx.block.find_address("D")) {
+      select_edge(ctx, static_cast<int>(d->value), d->column);
+    } else {
+      // MD20270 CUTTING_EDGE_DEFAULT = 1: after a change without D the first edge is active.
       state_.edge = 1;
-      const machine::Tool* tool = profile_.find_tool(*state_.active_tool);
-      state_.tool_radius_mm = tool && !tool->edges.empty() ? tool->edges.front().radius_mm : 0.0;
+      state_.tool_radius_mm = tool->edges.empty() ? 0.0 : tool->edges.front().radius_mm;
     }
     emit_control(ctx, ElementKind::ToolChange, "M6 " + *state_.active_tool);
   }

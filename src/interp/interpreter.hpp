@@ -55,6 +55,10 @@ class Interpreter {
   void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
   double feed_mm_s(const BlockContext& ctx) const;
+  // The profile's tool for a T selection: by name, or by number for T<n>.
+  const machine::Tool* find_tool(const std::string& id) const;
+  // D<n>: the active tool's edge n (0 = no offset); its radius feeds tool radius compensation.
+  void select_edge(const BlockContext& ctx, int d, uint32_t column);
   Eigen::Vector3d frame_offset(const BlockContext& ctx) const;
   Eigen::Vector3d target_position(BlockContext& ctx) const;
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;

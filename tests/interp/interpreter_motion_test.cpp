@@ -162,3 +162,19 @@ TEST(Interpreter, UnmodelledCommandWarnsByName) {
 
 }  // namespace
 }  // namespace drycut::interp::testing
+
+namespace drycut::interp::testing {
+namespace {
+
+TEST(Interpreter, NumberedToolAndEdgeInTheToolChangeBlock) {
+  // T1 is FR_4 by number; D1 in the M6 block selects the new tool's edge (radius 2 mm).
+  auto r = run_program("T1 M6 D1\nG42 G1 X10 F100\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  EXPECT_DOUBLE_EQ(r->sink.motions()[0].compensation.radius_mm, 2.0);
+  auto by_default = run_program("T1\nM6\nG41 G1 X10 F100\nM30\n");
+  ASSERT_FALSE(by_default->alarm) << by_default->alarm->format();
+  EXPECT_DOUBLE_EQ(by_default->sink.motions()[0].compensation.radius_mm, 2.0);  // MD20270: edge 1
+}
+
+}  // namespace
+}  // namespace drycut::interp::testing
