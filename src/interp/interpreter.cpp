@@ -67,9 +67,14 @@ int spline_quota(MotionMode mode, int cubic_spline_blocks) {
 // Everything one block asks for, gathered before anything moves (SINUMERIK executes a block's
 // words in a fixed order, not in the order they are written).
 struct Interpreter::BlockContext {
-  BlockContext(const parser::Block& b) : block(b), ref{b.file, b.line, b.text} {}
+  explicit BlockContext(const parser::Block& b) : block(b) {}
+  // The source of the elements this block makes (the text is copied once per element).
+  BlockRef ref() const { return BlockRef{block.file, block.line, block.text}; }
+  const std::string& file_name() const {
+    static const std::string kNone;
+    return block.file ? *block.file : kNone;
+  }
   const parser::Block& block;
-  BlockRef ref;
   bool exact_stop = false;      // G9
   bool suppress_offsets = false;  // G53
   bool dwell = false;           // G4
@@ -97,12 +102,12 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
 
 void Interpreter::raise(const BlockContext& ctx, int number, const std::string& detail,
                         uint32_t column) const {
-  throw AlarmError(make_alarm(number, detail, {ctx.ref.file_name(), ctx.ref.line, column}, ctx.ref.text));
+  throw AlarmError(make_alarm(number, detail, {ctx.file_name(), ctx.block.line, column}, ctx.block.text));
 }
 
 void Interpreter::warn_once(const BlockContext& ctx, const std::string& what, uint32_t column) {
   if (!warned_.insert(what).second) return;
-  diagnostics_.warn(kNotModelled, what, {ctx.ref.file_name(), ctx.ref.line, column}, ctx.ref.text);
+  diagnostics_.warn(kNotModelled, what, {ctx.file_name(), ctx.block.line, column}, ctx.block.text);
 }
 
 void Interpreter::execute(const parser::Block& block) {
@@ -319,7 +324,7 @@ double Interpreter::feed_mm_s(const BlockContext& ctx) const {
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {
   PathElement e;
   e.kind = kind;
-  e.source = ctx.ref;
+  e.source = ctx.ref();
   e.dynamics.transition = state_.transition;
   e.dynamics.profile = state_.accel;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
@@ -572,8 +577,8 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
     // The geometry knows what is wrong but not where: give the alarm this block's location.
     if (!error.alarm().where.file.empty()) throw;
     Alarm located = error.alarm();
-    located.where = {ctx.ref.file_name(), ctx.ref.line, 0};
-    located.block = ctx.ref.text;
+    located.where = {ctx.file_name(), ctx.block.line, 0};
+    located.block = ctx.block.text;
     throw AlarmError(std::move(located));
   }
   position_ = target;

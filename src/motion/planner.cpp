@@ -249,8 +249,6 @@ void Planner::commit_front() {
   WindowElement& w = elements_.front();
   const interp::PathElement& e = w.element;
   BlockTiming timing;
-  timing.source = e.source;
-  timing.label = e.label;
   timing.rapid = e.rapid;
   timing.after_first_m0 = seen_m0_;
 
@@ -337,6 +335,9 @@ void Planner::commit_front() {
   } else if (w.segment_count > 0) {
     dips_.interrupt();
   }
+  // The element leaves the window here: its source and label move into the timing uncopied.
+  timing.source = std::move(w.element.source);
+  timing.label = std::move(w.element.label);
   observer_.on_block(timing);
 
   if (w.segment_count > 0) --motion_in_window_;
