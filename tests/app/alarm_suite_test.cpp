@@ -15,61 +15,26 @@
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
+using drycut::testing::CliRun;
+using drycut::testing::Expectation;
+using drycut::testing::first_alarm;
+using drycut::testing::read_expectation;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-RunResult run_check(const fs::path& program, const std::string& extra_args) {
-  const std::string cmd = std::string("cd '") + program.parent_path().string() + "' && '" DRYCUT_BINARY
-                          "' check '" + program.filename().string() + "' " + extra_args + " 2>&1";
-  RunResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) r.output.append(buf, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-struct Expectation {
-  int number = 0;
-  int line = 0;
-  std::string extra_args;
-};
-
-bool read_expectation(const fs::path& file, Expectation& e) {
-  std::ifstream in(file, std::ios::binary);
-  std::string first;
-  std::getline(in, first);
-  std::istringstream s(first);
-  std::string semicolon, word;
-  if (!(s >> semicolon >> word >> e.number >> e.line) || semicolon != ";" || word != "expect") return false;
-  std::getline(s, e.extra_args);
-  return true;
-}
-
-// The first alarm in the output: "FILE:LINE:COL: ALARM NUMBER: ..."
-bool first_alarm(const std::string& output, int& number, int& line) {
-  static const std::regex re(R"(:(\d+):(\d+): ALARM (\d+):)");
-  std::smatch m;
-  if (!std::regex_search(output, m, re)) return false;
-  line = std::stoi(m[1]);
-  number = std::stoi(m[3]);
-  return true;
+CliRun run_check(const fs::path& program, const std::string& extra_args) {
+  return drycut::testing::run_in_folder("check", program, extra_args);
 }
 
 void expect_alarm(const fs::path& program, const Expectation& e) {
-  const RunResult r = run_check(program, e.extra_args);
-  SCOPED_TRACE(program.filename().string() + "\n" + r.output.substr(0, 2000));
+  const CliRun r = run_check(program, e.extra_args);
+  SCOPED_TRACE(program.filename().string() + "\n" + r.out.substr(0, 2000));
   EXPECT_EQ(r.exit_code, 1);
   int number = 0, line = 0;
-  ASSERT_TRUE(first_alarm(r.output, number, line));
+  ASSERT_TRUE(first_alarm(r.out, number, line));
   EXPECT_EQ(number, e.number);
   EXPECT_EQ(line, e.line);
 }
@@ -146,8 +111,8 @@ TEST(AlarmSuite, RandomBytesNeverCrash) {
         out.put(static_cast<char>(state >> 24));
       }
     }
-    const RunResult r = run_check(p, "--max-steps 100000");
-    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << p << " exit " << r.exit_code << "\n" << r.output;
+    const CliRun r = run_check(p, "--max-steps 100000");
+    EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1) << p << " exit " << r.exit_code << "\n" << r.out;
   }
   fs::remove_all(d);
 }

@@ -1,6 +1,7 @@
 // The `drycut check` command-line contract: exit codes 0/1/2, the summary line, --json,
 // --search-path, --max-steps.
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
@@ -11,25 +12,17 @@
 #include <fstream>
 #include <string>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-};
+using drycut::testing::CliRun;
 
 CliRun run(const std::string& args, bool with_stderr = false) {
-  const std::string cmd = std::string("'" DRYCUT_BINARY "' check ") + args + (with_stderr ? " 2>&1" : " 2>/dev/null");
-  CliRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) r.out.append(buf, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return drycut::testing::run_shell(drycut::testing::drycut_command("check " + args) +
+                                    (with_stderr ? " 2>&1" : " 2>/dev/null"));
 }
 
 class CheckCommand : public ::testing::Test {

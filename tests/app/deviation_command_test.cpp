@@ -1,5 +1,6 @@
 // The `drycut deviation` and `drycut sweep` command-line contract: table, JSON keys, exit codes.
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
@@ -11,18 +12,16 @@
 
 #include <sys/wait.h>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 int run(const std::string& args, std::string& out) {
-  const std::string cmd = std::string("'" DRYCUT_BINARY "' ") + args + " 2>/dev/null";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return -1;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  const int status = pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const drycut::testing::CliRun r = drycut::testing::run_shell(drycut::testing::drycut_command(args) + " 2>/dev/null");
+  out += r.out;
+  return r.exit_code;
 }
 
 class DeviationCommand : public ::testing::Test {

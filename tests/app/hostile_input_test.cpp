@@ -23,57 +23,18 @@
 #include <string>
 #include <vector>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
+using drycut::testing::CliRun;
+using drycut::testing::Expectation;
+using drycut::testing::first_alarm;
+using drycut::testing::read_expectation;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-RunResult run_drycut(const std::string& command, const fs::path& program, const std::string& extra_args) {
-  const std::string cmd = "cd '" + program.parent_path().string() + "' && '" DRYCUT_BINARY "' " + command +
-                          " '" + program.filename().string() + "' " + extra_args + " 2>&1";
-  RunResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) r.output.append(buf, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-RunResult run(const fs::path& program, const std::string& extra_args = "") {
-  return run_drycut("run -q", program, extra_args);
-}
-
-struct Expectation {
-  int number = 0;
-  int line = 0;
-  std::string extra_args;
-};
-
-bool read_expectation(const fs::path& file, Expectation& e) {
-  std::ifstream in(file, std::ios::binary);
-  std::string first;
-  std::getline(in, first);
-  std::istringstream s(first);
-  std::string semicolon, word;
-  if (!(s >> semicolon >> word >> e.number >> e.line) || semicolon != ";" || word != "expect") return false;
-  std::getline(s, e.extra_args);
-  return true;
-}
-
-// The first alarm in the output: "FILE:LINE:COL: ALARM NUMBER: ..."
-bool first_alarm(const std::string& output, int& number, int& line) {
-  static const std::regex re(R"(:(\d+):(\d+): ALARM (\d+):)");
-  std::smatch m;
-  if (!std::regex_search(output, m, re)) return false;
-  line = std::stoi(m[1]);
-  number = std::stoi(m[3]);
-  return true;
+CliRun run(const fs::path& program, const std::string& extra_args = "") {
+  return drycut::testing::run_in_folder("run -q", program, extra_args);
 }
 
 // The summary's "time  <seconds> s" line; NaN when missing.
@@ -91,20 +52,20 @@ double summary_time(const std::string& output) {
 // Nothing a program can say takes longer than this (a year): beyond it the time is absurd.
 constexpr double kAbsurdTimeS = 365.0 * 24 * 3600;
 
-void expect_alarm(const RunResult& r, int number, int line) {
+void expect_alarm(const CliRun& r, int number, int line) {
   EXPECT_EQ(r.exit_code, 1);
   int got_number = 0, got_line = 0;
-  ASSERT_TRUE(first_alarm(r.output, got_number, got_line));
+  ASSERT_TRUE(first_alarm(r.out, got_number, got_line));
   EXPECT_EQ(got_number, number);
   EXPECT_EQ(got_line, line);
-  const double t = summary_time(r.output);
+  const double t = summary_time(r.out);
   EXPECT_TRUE(std::isfinite(t) && t >= 0 && t < kAbsurdTimeS) << "time " << t;
 }
 
-void expect_clean(const RunResult& r) {
+void expect_clean(const CliRun& r) {
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_EQ(r.output.find("ALARM"), std::string::npos);
-  const double t = summary_time(r.output);
+  EXPECT_EQ(r.out.find("ALARM"), std::string::npos);
+  const double t = summary_time(r.out);
   EXPECT_TRUE(std::isfinite(t) && t >= 0 && t < kAbsurdTimeS) << "time " << t;
 }
 
@@ -139,8 +100,8 @@ TEST(HostileInput, RunCasesEndInTheirAlarmAtTheirLine) {
   for (const auto& c : cases) {
     Expectation e;
     ASSERT_TRUE(read_expectation(c, e)) << c << ": first line must be '; expect <number> <line>'";
-    const RunResult r = run(c, e.extra_args);
-    SCOPED_TRACE(c.filename().string() + "\n" + r.output.substr(0, 2000));
+    const CliRun r = run(c, e.extra_args);
+    SCOPED_TRACE(c.filename().string() + "\n" + r.out.substr(0, 2000));
     expect_alarm(r, e.number, e.line);
   }
 }
@@ -153,10 +114,10 @@ TEST(HostileInput, OkCasesRunCleanWithAFiniteTime) {
     std::string first;
     std::getline(in, first);
     EXPECT_EQ(first.rfind("; ok:", 0), 0u) << c << ": first line must be '; ok: <why>'";
-    const RunResult checked = run_drycut("check", c, "");
-    EXPECT_EQ(checked.exit_code, 0) << c << "\n" << checked.output;
-    const RunResult r = run(c);
-    SCOPED_TRACE(c.filename().string() + "\n" + r.output.substr(0, 2000));
+    const CliRun checked = drycut::testing::run_in_folder("check", c, "");
+    EXPECT_EQ(checked.exit_code, 0) << c << "\n" << checked.out;
+    const CliRun r = run(c);
+    SCOPED_TRACE(c.filename().string() + "\n" + r.out.substr(0, 2000));
     expect_clean(r);
   }
 }
@@ -167,16 +128,16 @@ TEST(HostileInput, EveryCheckSuiteCaseAlsoEndsInAnAlarmUnderRun) {
   for (const auto& c : programs_in(kAlarmDir)) {
     Expectation e;
     ASSERT_TRUE(read_expectation(c, e)) << c;
-    const RunResult r = run(c, e.extra_args);
-    SCOPED_TRACE(c.filename().string() + "\n" + r.output.substr(0, 2000));
+    const CliRun r = run(c, e.extra_args);
+    SCOPED_TRACE(c.filename().string() + "\n" + r.out.substr(0, 2000));
     EXPECT_EQ(r.exit_code, 1);
     int number = 0, line = 0;
-    ASSERT_TRUE(first_alarm(r.output, number, line));
+    ASSERT_TRUE(first_alarm(r.out, number, line));
     EXPECT_LE(line, e.line);
     if (line == e.line) {
       EXPECT_EQ(number, e.number);
     }
-    const double t = summary_time(r.output);
+    const double t = summary_time(r.out);
     EXPECT_TRUE(std::isfinite(t) && t >= 0 && t < kAbsurdTimeS) << "time " << t;
   }
 }
@@ -185,8 +146,8 @@ TEST(HostileInput, ProgramCallingItselfEndsInTheNestingAlarm) {
   TempDir d;
   const fs::path p = d.path() / "SELF.MPF";
   std::ofstream(p, std::ios::binary) << "G1 X1 F100\nSELF\nM30\n";
-  const RunResult r = run(p);
-  SCOPED_TRACE(r.output.substr(0, 2000));
+  const CliRun r = run(p);
+  SCOPED_TRACE(r.out.substr(0, 2000));
   expect_alarm(r, 990003, 2);
 }
 
@@ -212,8 +173,8 @@ TEST(HostileInput, HundredMegabyteProgramStreamsInBoundedMemory) {
     out << "M30\n";
   }
   ASSERT_GE(fs::file_size(p), kTargetBytes);
-  const RunResult r = run(p);
-  SCOPED_TRACE(r.output.substr(0, 2000));
+  const CliRun r = run(p);
+  SCOPED_TRACE(r.out.substr(0, 2000));
   expect_clean(r);
 #if !defined(__SANITIZE_ADDRESS__)
   // Peak RSS of the largest child so far (this one: the file is 100 MB, the others tiny).
@@ -228,8 +189,8 @@ TEST(HostileInput, MegabyteCommentLineIsTheBlockLengthAlarm) {
   TempDir d;
   const fs::path p = d.path() / "long_line.mpf";
   std::ofstream(p, std::ios::binary) << "G1 X1 F100\nG1 X2 ;" << std::string(1 << 20, 'a') << "\nM30\n";
-  const RunResult r = run(p);
-  SCOPED_TRACE(r.output.substr(0, 2000));
+  const CliRun r = run(p);
+  SCOPED_TRACE(r.out.substr(0, 2000));
   expect_alarm(r, 12080, 2);
 }
 
@@ -255,8 +216,8 @@ TEST(HostileInput, DeepExpressionsAreSyntaxAlarmsNotStackOverflows) {
   for (const auto& c : cases) {
     const fs::path p = d.path() / (c.name + ".mpf");
     std::ofstream(p, std::ios::binary) << "G1 X1 F100\n" << c.text << "\nM30\n";
-    const RunResult r = run(p);
-    SCOPED_TRACE(c.name + "\n" + r.output.substr(0, 2000));
+    const CliRun r = run(p);
+    SCOPED_TRACE(c.name + "\n" + r.out.substr(0, 2000));
     expect_alarm(r, 12080, 2);
   }
 }
@@ -268,20 +229,20 @@ TEST(HostileInput, LongButShallowExpressionEvaluates) {
   std::string sum = "R1=0.001";
   for (int i = 1; i < 10000; ++i) sum += "+0.001";
   std::ofstream(p, std::ios::binary) << sum << "\nG1 X=R1 F600\nM30\n";
-  const RunResult r = run(p);
-  SCOPED_TRACE(r.output.substr(0, 2000));
+  const CliRun r = run(p);
+  SCOPED_TRACE(r.out.substr(0, 2000));
   expect_clean(r);
   // 10 mm at 600 mm/min is at least 1 s (ramps add a little).
-  EXPECT_GE(summary_time(r.output), 1.0);
-  EXPECT_LT(summary_time(r.output), 2.0);
+  EXPECT_GE(summary_time(r.out), 1.0);
+  EXPECT_LT(summary_time(r.out), 2.0);
 }
 
 TEST(HostileInput, NulBytesInsideABlockAreASyntaxAlarm) {
   TempDir d;
   const fs::path p = d.path() / "nul.mpf";
   std::ofstream(p, std::ios::binary) << "G1 X1 F100\nG1 X2" << std::string(3, '\0') << "Y2\nM30\n";
-  const RunResult r = run(p);
-  SCOPED_TRACE(r.output.substr(0, 2000));
+  const CliRun r = run(p);
+  SCOPED_TRACE(r.out.substr(0, 2000));
   expect_alarm(r, 12080, 2);
 }
 

@@ -9,17 +9,9 @@
 #include <sstream>
 #include <string>
 
-namespace {
+#include "cli_support.hpp"
 
-std::string run(const std::string& command) {
-  std::string out;
-  std::FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  std::array<char, 4096> buf{};
-  while (size_t n = std::fread(buf.data(), 1, buf.size(), pipe)) out.append(buf.data(), n);
-  pclose(pipe);
-  return out;
-}
+namespace {
 
 std::string expected_listing(const std::filesystem::path& file) {
   std::ifstream in(file);
@@ -36,7 +28,8 @@ TEST(ProgramListings, EveryCaseMatchesItsReviewedListing) {
     if (!entry.is_directory()) continue;
     ++cases;
     const auto main = entry.path() / "MAIN.MPF";
-    const std::string actual = run(std::string(DRYCUT_BINARY) + " path '" + main.string() + "' --elements");
+    const std::string actual =
+        drycut::testing::run_shell(drycut::testing::drycut_command("path '" + main.string() + "' --elements")).out;
     EXPECT_EQ(actual, expected_listing(entry.path() / "expected.txt")) << entry.path().filename();
   }
   EXPECT_GE(cases, 5);

@@ -9,28 +9,19 @@
 #include <sstream>
 #include <string>
 
+#include "cli_support.hpp"
+
 namespace drycut::report_cli {
 
 namespace fs = std::filesystem;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;
-};
+using drycut::testing::CliRun;
 
 // `args` is passed to the shell as written (quote paths yourself); stderr goes to `stderr_file`
 // (a file, never a terminal) or is dropped.
 inline CliRun run_drycut(const std::string& args, const std::string& stderr_file = "") {
-  const std::string cmd = std::string("'" DRYCUT_BINARY "' ") + args + " 2>" +
-                          (stderr_file.empty() ? std::string("/dev/null") : "'" + stderr_file + "'");
-  CliRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  while (size_t n = fread(buf, 1, sizeof buf, pipe)) r.out.append(buf, n);
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return drycut::testing::run_shell(drycut::testing::drycut_command(args) + " 2>" +
+                                    (stderr_file.empty() ? std::string("/dev/null") : "'" + stderr_file + "'"));
 }
 
 inline std::string read_file(const fs::path& p) {
