@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "machine/alarm.hpp"
+#include "parser/ascii_case.hpp"
 #include "parser/expression_evaluator.hpp"
 #include "parser/expression_parser.hpp"
 #include "parser/lexer.hpp"
@@ -11,17 +12,10 @@
 namespace drycut::parser {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out)
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  return out;
-}
-
 class MapVariables : public VariableSource {
  public:
   explicit MapVariables(const std::map<std::string, double>& vars) {
-    for (const auto& [k, v] : vars) upper_vars_[upper(k)] = v;
+    for (const auto& [k, v] : vars) upper_vars_[upper_ascii(k)] = v;
   }
   double variable(std::string_view name, uint32_t column) const override {
     if (auto it = upper_vars_.find(std::string(name)); it != upper_vars_.end()) return it->second;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "parser/ascii_case.hpp"
 #include "parser/line_error.hpp"
 
 namespace drycut::parser {
@@ -51,8 +52,7 @@ double to_double(std::string_view text, uint32_t column) {
 void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
   out.clear();
   upper_.assign(line);
-  for (char& c : upper_)
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  to_upper_ascii(upper_);
   const std::string_view s = upper_;
   const size_t n = s.size();
   size_t i = 0;

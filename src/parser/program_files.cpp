@@ -2,15 +2,10 @@
 
 #include <system_error>
 
+#include "parser/ascii_case.hpp"
+
 namespace drycut::parser {
 namespace {
-
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out)
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  return out;
-}
 
 bool ends_with(std::string_view s, std::string_view tail) {
   return s.size() >= tail.size() && s.substr(s.size() - tail.size()) == tail;
@@ -20,7 +15,7 @@ bool ends_with(std::string_view s, std::string_view tail) {
 
 ProgramName normalize_program_name(std::string_view written) {
   ProgramName p;
-  std::string s = upper(written);
+  std::string s = upper_ascii(written);
   if (ends_with(s, ".SPF") || ends_with(s, ".MPF")) {
     p.extension = s.substr(s.size() - 3);
     s.resize(s.size() - 4);
@@ -44,7 +39,7 @@ const std::unordered_map<std::string, std::filesystem::path>& ProgramFiles::list
       std::error_code file_ec;
       if (!it->is_regular_file(file_ec)) continue;
       // The first spelling wins if a folder holds both SUB.SPF and sub.spf.
-      listings_[d]->emplace(upper(it->path().filename().string()), it->path());
+      listings_[d]->emplace(upper_ascii(it->path().filename().string()), it->path());
     }
   }
   return *listings_[d];
