@@ -304,6 +304,15 @@ bool ProgramLoader::execute_words(Block& out) {
   bool has_words = false;
   PendingAction action = PendingAction::None;
   pending_args_.clear();
+  // A modelled command (ASPLINE, SOFT, CYCLE832(...)) goes into the block and the statistics.
+  auto add_command = [&](const Item& item) -> CommandWord& {
+    if (commands_used_.find(item.name) == commands_used_.end()) commands_used_.emplace(item.name);
+    has_words = true;
+    CommandWord& c = out.commands.emplace_back();
+    c.name.assign(item.name);
+    c.column = item.column;
+    return c;
+  };
   for (const Item& item : parsed_.items) {
     switch (item.kind) {
       case ItemKind::G: {
@@ -369,10 +378,8 @@ bool ProgramLoader::execute_words(Block& out) {
           break;
         }
         if (s == Support::Modelled) {
-          CommandWord c;
-          c.name.assign(item.name);
+          CommandWord& c = add_command(item);
           c.has_parentheses = true;
-          c.column = item.column;
           for (uint32_t k = 0; k < item.arg_count; ++k) {
             const ExprIndex a = parsed_.pool.args[item.arg_first + k];
             if (a == kNoExpr) {
@@ -388,9 +395,6 @@ bool ProgramLoader::execute_words(Block& out) {
               c.args.emplace_back(eval(a));
             }
           }
-          if (commands_used_.find(item.name) == commands_used_.end()) commands_used_.emplace(item.name);
-          out.commands.push_back(std::move(c));
-          has_words = true;
           break;
         }
         if (is_expression_keyword(item.name))
@@ -412,12 +416,7 @@ bool ProgramLoader::execute_words(Block& out) {
           break;
         }
         if (s == Support::Modelled) {
-          CommandWord c;
-          c.name.assign(item.name);
-          c.column = item.column;
-          if (commands_used_.find(item.name) == commands_used_.end()) commands_used_.emplace(item.name);
-          out.commands.push_back(std::move(c));
-          has_words = true;
+          add_command(item);
           if (item.name == "RET") action = PendingAction::Return;
           break;
         }
