@@ -11,6 +11,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/loader_setup.hpp"
 #include "machine/alarm.hpp"
 #include "parser/block.hpp"
 #include "parser/program_loader.hpp"
@@ -21,6 +22,8 @@ namespace {
 struct CheckOptions {
   std::string program;
   std::vector<std::string> search_path;
+  std::vector<std::string> definition_dirs;
+  std::string machine_file;
   bool json = false;
   uint64_t max_steps = 100'000'000;
 };
@@ -36,11 +39,17 @@ nlohmann::json alarm_json(const Alarm& a) {
 }
 
 int run_check(const CheckOptions& opt) {
-  parser::LoaderOptions lo;
-  for (const auto& d : opt.search_path) lo.search_path.emplace_back(d);
-  lo.max_steps = opt.max_steps;
   Diagnostics diagnostics;
-  parser::ProgramLoader loader(lo, diagnostics);
+  machine::MachineProfile profile;
+  try {
+    profile = opt.machine_file.empty() ? machine::default_profile() : machine::load_profile_file(opt.machine_file);
+  } catch (const machine::ProfileError& e) {
+    std::fprintf(stderr, "drycut check: %s\n", e.what());
+    return kExitUsage;
+  }
+  // The same loader set-up as `run`: one language, one machine.
+  parser::ProgramLoader loader(make_loader_options(opt.search_path, opt.max_steps, opt.definition_dirs, profile),
+                               diagnostics);
   try {
     loader.open_main(opt.program);
   } catch (const UsageError& e) {
@@ -83,6 +92,9 @@ void register_check(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("check", "Parse and walk a part program; report alarms");
   cmd->add_option("program", opt->program, "Main program (.MPF)")->required();
   cmd->add_option("--search-path", opt->search_path, "Folder searched for subprograms (repeatable)");
+  cmd->add_option("--definitions", opt->definition_dirs,
+                  "Folder of definition files (GUD/MAC .DEF) read before the program (repeatable)");
+  cmd->add_option("--machine", opt->machine_file, "Machine profile JSON (machine data the program reads)");
   cmd->add_flag("--json", opt->json, "Print a JSON object instead of the summary line");
   cmd->add_option("--max-steps", opt->max_steps, "Lines executed before an endless-loop alarm")
       ->check(CLI::PositiveNumber);

@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "app/exit_code.hpp"
+#include "app/loader_setup.hpp"
+#include "interp/controller_state_view.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/program_loader.hpp"
@@ -14,6 +16,9 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
   cmd.add_option("PROGRAM", options.program, "Main program (.MPF)")->required();
   cmd.add_option("--search-path", options.search_path,
                  "Folder searched for subprograms after the main program's folder (repeatable)");
+  cmd.add_option("--definitions", options.definition_dirs,
+                 "Folder of definition files (GUD/MAC .DEF) read before the program (repeatable); "
+                 "*.DEF beside the main program are always read");
   cmd.add_option("--machine", options.machine_file,
                  "Machine profile JSON (default: the embedded TAJMAC-ZPS MCV 1210)");
   cmd.add_option("--max-steps", options.max_steps,
@@ -34,13 +39,13 @@ machine::MachineProfile load_machine(const ProgramOptions& options) {
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
                             interp::ElementSink& sink) {
   PipelineOutcome outcome;
-  parser::LoaderOptions loader_options;
-  for (const auto& dir : options.search_path) loader_options.search_path.emplace_back(dir);
-  loader_options.max_steps = options.max_steps;
-  parser::ProgramLoader loader(loader_options, outcome.diagnostics);
+  parser::ProgramLoader loader(
+      make_loader_options(options.search_path, options.max_steps, options.definition_dirs, profile), outcome.diagnostics);
   loader.open_main(options.program);  // UsageError when the file cannot be read
 
   interp::Interpreter interpreter(profile, sink, outcome.diagnostics);
+  interp::InterpreterStateView state_view(interpreter, profile);
+  loader.set_state_view(&state_view);  // $P_/$AA_/$TC_ reads see the interpreted state
   parser::Block block;
   try {
     // Progress on stderr for long runs, only on a terminal and without --quiet.

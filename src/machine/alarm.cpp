@@ -22,7 +22,8 @@ Alarm make_alarm(int number, const std::string& detail, SourceLocation where, st
   a.number = number;
   const AlarmInfo* info = find_alarm(number);
   a.severity = info ? info->severity : Severity::Alarm;
-  a.text = info ? info->text : "Unknown alarm";
+  // 60000..69999: cycle and user alarms raised by the program with SETAL.
+  a.text = info ? info->text : (number >= 60000 && number <= 69999) ? "Cycle alarm (SETAL)" : "Unknown alarm";
   if (!detail.empty()) a.text += ": " + detail;
   a.where = std::move(where);
   // A 10 MB line must not produce a 10 MB message: keep the block text readable.

@@ -37,9 +37,12 @@ constexpr std::array kCatalog{
     AlarmInfo{14051, S::Alarm, "Arithmetic error in part program", A::ThirdParty},
     AlarmInfo{14060, S::Alarm, "Invalid skip level with differential block skip", A::ThirdParty},
     AlarmInfo{14080, S::Alarm, "Jump destination not found", A::ThirdParty},
+    AlarmInfo{14130, S::Alarm, "Too many initialization values", A::ThirdParty},
     AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
     AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
     AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
+    AlarmInfo{17020, S::Alarm, "Illegal array index 1", A::Memory},
+    AlarmInfo{17030, S::Alarm, "Illegal array index 2", A::Memory},
     // drycut's own numbers: situations the control certainly rejects, but whose number no
     // public source gives.
     AlarmInfo{990001, S::Alarm, "Too few spline blocks in a window of 10 blocks", A::Drycut},
@@ -48,6 +51,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990004, S::Alarm, "Step limit reached (endless loop?)", A::Drycut},
     AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
     AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
+    AlarmInfo{990007, S::Warning, "Value not known to drycut; the documented default is used", A::Drycut},
     AlarmInfo{990010, S::Alarm, "Program contains no blocks", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };

@@ -145,6 +145,21 @@ ToolEdge read_edge(const json& node, const std::string& path) {
   return e;
 }
 
+void read_machine_data(const json& node, MachineProfile& p) {
+  if (!node.is_object()) throw ProfileError("machine_data: must be an object of \"$NAME[index]\": number");
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    if (it.key().empty() || it.key()[0] != '$')
+      throw ProfileError("machine_data." + it.key() + ": names start with $ ($MN_..., $MA_...[X1], $A_IN[1])");
+    if (it->is_boolean()) {
+      p.machine_data[it.key()] = it->get<bool>() ? 1.0 : 0.0;
+    } else if (it->is_number()) {
+      p.machine_data[it.key()] = it->get<double>();
+    } else {
+      throw ProfileError("machine_data." + it.key() + ": must be a number");
+    }
+  }
+}
+
 void read_tools(const json& node, MachineProfile& p) {
   if (!node.is_array()) throw ProfileError("tools: must be an array");
   p.tools.clear();
@@ -193,6 +208,7 @@ MachineProfile load_profile_json(const std::string& json_text, const std::string
     }
     if (const json* program = r.child("program")) read_program(*program, p);
     if (const json* tools = r.child("tools")) read_tools(*tools, p);
+    if (const json* md = r.child("machine_data")) read_machine_data(*md, p);
     r.reject_unknown_keys();
     return p;
   } catch (const ProfileError& e) {
@@ -256,6 +272,7 @@ std::string profile_to_json(const MachineProfile& p) {
     tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});
   }
   root["tools"] = tools;
+  if (!p.machine_data.empty()) root["machine_data"] = p.machine_data;
   return root.dump(2);
 }
 

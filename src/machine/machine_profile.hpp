@@ -64,6 +64,11 @@ struct MachineProfile {
   int cutcom_maxnum_dummy_blocks = 3;           // MD20250
   double cutcom_decel_limit = 0.0;              // SD42528: lowest tool-centre feed share on inside curves (CFC)
 
+  // Further machine/setting data, inputs and PLC data by their `$` name as programs read them
+  // ("$MN_SCALING_SYSTEM_IS_METRIC", "$MA_COMPRESS_POS_TOL[X1]", "$A_IN[3]"). The fields above
+  // are answered under their own MD names (see machine_data_values()).
+  std::map<std::string, double> machine_data;
+
   const Tool* find_tool(const std::string& name) const {
     for (const auto& t : tools)
       if (t.name == name) return &t;

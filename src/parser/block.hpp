@@ -10,6 +10,8 @@
 #include <variant>
 #include <vector>
 
+#include "parser/value.hpp"
+
 namespace drycut::parser {
 
 // How an address value was written: plain `X5`, or `X=AC(5)` / `X=IC(5)`.
@@ -47,6 +49,15 @@ struct CommandWord {
   uint32_t column = 0;
 };
 
+// A `$` system variable written in the block ($TC_DP6[1,1]=4, $P_UIFR[1]=...,
+// $MA_COMPRESS_POS_TOL[X1]=0.01): the interpreter applies those it models.
+struct SystemWrite {
+  std::string name;  // upper case, with '$'
+  std::vector<Value> indices;
+  Value value;
+  uint32_t column = 0;
+};
+
 struct Block {
   std::shared_ptr<const std::string> file;  // shared by all blocks of one file
   uint32_t line = 0;
@@ -58,6 +69,7 @@ struct Block {
   std::vector<AddressWord> addresses;
   std::vector<CommandWord> commands;
   std::optional<std::string> tool_name;  // T="name" (case preserved)
+  std::vector<SystemWrite> system_writes;
 
   // Empties the block but keeps the vectors' capacity (the loader reuses one Block).
   void clear() {
@@ -71,6 +83,7 @@ struct Block {
     addresses.clear();
     commands.clear();
     tool_name.reset();
+    system_writes.clear();
   }
 
   const AddressWord* find_address(std::string_view name) const {

@@ -15,6 +15,7 @@ struct CommandEntry {
 
 constexpr Support M = Support::Modelled;
 constexpr Support N = Support::NotModelled;
+constexpr Support E = Support::NoEffect;
 
 // Commands the interpreter gives meaning to, then valid ones it does not model (yet).
 constexpr std::array kCommands{
@@ -25,7 +26,7 @@ constexpr std::array kCommands{
     CommandEntry{"BRISK", M},   CommandEntry{"NORM", M},    CommandEntry{"KONT", M},
     CommandEntry{"CDON", M},    CommandEntry{"CDOF", M},    CommandEntry{"TRANS", M},
     CommandEntry{"ATRANS", M},  CommandEntry{"SPLINEPATH", M}, CommandEntry{"CYCLE832", M},
-    CommandEntry{"MSG", M},     CommandEntry{"STOPRE", M},  CommandEntry{"RET", M},
+    CommandEntry{"MSG", M},     CommandEntry{"RET", M},
     CommandEntry{"POLY", M},
     // Valid on the control, not modelled by drycut.
     CommandEntry{"TRAORI", N},  CommandEntry{"TRAFOOF", N}, CommandEntry{"TRACYL", N},
@@ -48,8 +49,29 @@ constexpr std::array kCommands{
     CommandEntry{"WORKPIECE", N}, CommandEntry{"POCKET3", N}, CommandEntry{"POCKET4", N},
     CommandEntry{"SLOT1", N},   CommandEntry{"SLOT2", N},   CommandEntry{"LONGHOLE", N},
     CommandEntry{"HOLES1", N},  CommandEntry{"HOLES2", N},  CommandEntry{"MCALL", N},
-    CommandEntry{"OFFN", N},    CommandEntry{"DISCL", N},   
-    CommandEntry{"EXTCALL", N}, CommandEntry{"PCALL", N},   
+    CommandEntry{"DISCL", N},
+    CommandEntry{"EXTCALL", N}, CommandEntry{"PCALL", N},
+    CommandEntry{"POS", N},     CommandEntry{"POSA", N},    CommandEntry{"SPOSA", N},
+    CommandEntry{"WAITP", N},   CommandEntry{"WAITS", N},   CommandEntry{"LIMS", N},
+    CommandEntry{"PRESETON", N}, CommandEntry{"CPROT", N},  CommandEntry{"ORIRESET", N},
+    CommandEntry{"FL", N},      CommandEntry{"ACC", N},     CommandEntry{"JERKLIM", N},
+    CommandEntry{"VELOLIM", N}, CommandEntry{"FGREF", N},   CommandEntry{"CTOL", N},
+    CommandEntry{"OTOL", N},    CommandEntry{"ATOL", N},    CommandEntry{"TOFFON", N},
+    CommandEntry{"TOFFOF", N},  CommandEntry{"TOFFL", N},   CommandEntry{"TOFF", N},
+    CommandEntry{"CUTMOD", N},  CommandEntry{"ORISON", N},  CommandEntry{"ORISOF", N},
+    CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", N},
+    CommandEntry{"TRAILON", N}, CommandEntry{"TRAILOF", N}, CommandEntry{"COUPON", N},
+    CommandEntry{"COUPOF", N},  CommandEntry{"SPCON", N},   CommandEntry{"SPCOF", N},
+    CommandEntry{"FA", N},      CommandEntry{"OVR", N},     CommandEntry{"DYNPREC", N},
+    // Valid, and modelled by doing nothing: they change display, single-block or buffer
+    // behaviour, nothing a dry run measures.
+    CommandEntry{"SBLOF", E},   CommandEntry{"SBLON", E},   CommandEntry{"DISPLOF", E},
+    CommandEntry{"DISPLON", E}, CommandEntry{"SAVE", E},    CommandEntry{"ACTBLOCNO", E},
+    CommandEntry{"DRFOF", E},   CommandEntry{"STARTFIFO", E}, CommandEntry{"STOPFIFO", E},
+    CommandEntry{"STOPRE", M},  CommandEntry{"IPTRLOCK", E}, CommandEntry{"IPTRUNLOCK", E},
+    CommandEntry{"CLEARM", E},  CommandEntry{"SETM", E},    CommandEntry{"WRTPR", E},
+    CommandEntry{"RMI", E},     CommandEntry{"RMB", E},     CommandEntry{"RME", E},
+    CommandEntry{"RMN", E},     CommandEntry{"WALIMON", E}, CommandEntry{"WALIMOF", E},
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
@@ -59,10 +81,30 @@ constexpr std::array<std::string_view, 40> kAddresses{
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS"};
 
 // Words of the language itself, for the misspelling check.
-constexpr std::array<std::string_view, 22> kKeywords{
+constexpr std::array<std::string_view, 33> kKeywords{
     "GOTOF", "GOTOB", "GOTOC", "GOTO", "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR",
     "ENDFOR", "REPEAT", "UNTIL", "LOOP", "ENDLOOP", "CALL", "DEF", "PROC", "RET", "SAVE",
-    "DISPLOF", "TO"};
+    "DISPLOF", "TO", "CASE", "OF", "DEFAULT", "REPEATB", "EXTERN", "DEFINE", "SETAL",
+    "WHEN", "WHENEVER", "SETINT", "ENABLE"};
+
+// G groups with the internal numbers of their G codes (PGA Fundamentals, "List of G
+// functions"): G[group]=n selects the n-th, $P_GG[group] reads it.
+struct GGroup {
+  int group;
+  std::array<int, 13> codes;  // 0: end of the list
+};
+constexpr std::array kGGroups{
+    GGroup{1, {0, 1, 2, 3}},                                   // G0 G1 G2 G3 (then CIP, splines ...)
+    GGroup{6, {17, 18, 19}},                                   // planes
+    GGroup{7, {40, 41, 42}},                                   // tool radius compensation
+    GGroup{8, {500, 54, 55, 56, 57}},                          // settable zero offsets (G505.. follow)
+    GGroup{10, {60, 64, 641, 642, 643, 644, 645}},             // exact stop / continuous path
+    GGroup{12, {601, 602, 603}},                               // exact-stop window
+    GGroup{13, {70, 71, 700, 710}},                            // inch / metric
+    GGroup{14, {90, 91}},                                      // absolute / incremental
+    GGroup{15, {93, 94, 95, 96, 97, 931, 961, 971, 942, 952, 962, 972, 973}},  // feed types
+    GGroup{18, {450, 451}},                                    // corner behaviour with TRC
+};
 
 bool all_digits(std::string_view s) {
   return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -115,6 +157,42 @@ Support g_code_support(int64_t g) {
       if (g >= 505 && g <= 599) return M;  // settable zero offsets
       return Support::Unknown;
   }
+}
+
+int g_code_of_group(int group, int index) {
+  if (group == 8 && index >= 6 && index <= 100) return 505 + (index - 6);  // G505 .. G599
+  for (const auto& g : kGGroups) {
+    if (g.group != group) continue;
+    int n = 0;
+    for (size_t i = 0; i < g.codes.size(); ++i) {
+      if (i > 0 && g.codes[i] == 0) break;
+      if (++n == index) return g.codes[i];
+    }
+  }
+  return -1;
+}
+
+bool g_group_of_code(int code, int& group, int& index) {
+  if (code >= 505 && code <= 599) {
+    group = 8;
+    index = 6 + (code - 505);
+    return true;
+  }
+  for (const auto& g : kGGroups)
+    for (size_t i = 0; i < g.codes.size(); ++i) {
+      if (i > 0 && g.codes[i] == 0) break;
+      if (g.codes[i] == code) {
+        group = g.group;
+        index = static_cast<int>(i) + 1;
+        return true;
+      }
+    }
+  return false;
+}
+
+bool is_extended_address(std::string_view name) {
+  if (name.size() < 2 || std::string_view("XYZABCUVWSHDTEQ").find(name[0]) == std::string_view::npos) return false;
+  return all_digits(name.substr(1));
 }
 
 bool is_address(std::string_view name) {

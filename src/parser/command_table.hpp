@@ -6,7 +6,8 @@
 
 namespace drycut::parser {
 
-enum class Support : uint8_t { Unknown, Modelled, NotModelled };
+// NoEffect: valid, and correctly modelled by doing nothing in a dry run (SBLOF, DISPLON ...).
+enum class Support : uint8_t { Unknown, Modelled, NotModelled, NoEffect };
 
 // Commands and procedures by upper-case name (ASPLINE, CYCLE832, TRAORI, CYCLE81 ...).
 Support command_support(std::string_view upper_name);
@@ -14,6 +15,14 @@ Support command_support(std::string_view upper_name);
 Support g_code_support(int64_t code);
 // Addresses that carry a value: X Y Z A B C ... F S D H T, I1 J1 K1, PW SD PL CR AR AP RP TURN.
 bool is_address(std::string_view upper_name);
+// Extended addresses: an address letter with a numeric extension, X1= (axis), S1= (spindle),
+// H7= (auxiliary function), D2=, T1=.
+bool is_extended_address(std::string_view upper_name);
+// The G code with internal number `index` (from 1) in G group `group` (PGA Fundamentals, list
+// of G groups), for G[group]=index and $P_GG; -1 where drycut does not know the group.
+int g_code_of_group(int group, int index);
+// The group and internal number of a G code, or false.
+bool g_group_of_code(int code, int& group, int& index);
 // Closest known command or keyword within a small edit distance ("ASPLIN" -> "ASPLINE"), or
 // empty. Used to tell a misspelled word from an unknown subprogram.
 std::string_view near_miss(std::string_view upper_name);

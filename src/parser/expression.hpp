@@ -10,7 +10,8 @@ namespace drycut::parser {
 enum class ExprOp : uint8_t {
   Number,       // value
   String,       // text (a string literal; only valid where a string is expected)
-  Name,         // text: a DEF variable, TRUE/FALSE, or a bare word such as an axis name
+  Name,         // text: a variable, TRUE/FALSE, a $ system variable or a bare axis name;
+                // indices NAME[i, j, k] are args[a .. a+b) (b = 0: no index)
   RParam,       // value = index: R1
   RParamIndex,  // a = index expression: R[R2+1]
   Negate,       // a
@@ -18,13 +19,27 @@ enum class ExprOp : uint8_t {
   Add, Subtract, Multiply, Divide, IntDivide, Modulo,              // a, b
   Equal, NotEqual, Less, Greater, LessEqual, GreaterEqual,        // a, b
   And, Or, Xor,                                                     // a, b
+  BitAnd, BitOr, BitXor, BitNot,    // B_AND B_OR B_XOR (a, b), B_NOT (a)
+  Concat,                           // a << b: strings (numbers converted)
   Call,         // function `func`, arguments args[a .. a+b)
 };
 
+// Functions of the language; their names, argument counts and support are in
+// function_table.cpp (the one table of functions).
 enum class Function : uint8_t {
-  Sin, Cos, Tan, Asin, Acos, Atan2, Sqrt, Abs, Pot, Trunc, Round, Ln, Exp, Min, Max,
-  AbsoluteMode,     // AC(x): only as the whole value of an address
+  Sin, Cos, Tan, Asin, Acos, Atan2, Sqrt, Abs, Pot, Trunc, Round, RoundUp, Ln, Exp, Min, Max,
+  Bound,
+  // Strings
+  StrLen, Index, RIndex, MIndex, SubStr, ToUpper, ToLower, Number, IsNumber, Sprint, AxName,
+  AxString,
+  // Answered by the program's environment (variables, tools, frames)
+  IsVar, GetT, FrameFunction,
+  // Position modes: only as the whole value of an address
+  AbsoluteMode,     // AC(x)
   IncrementalMode,  // IC(x)
+  DirectMode,       // DC(x): rotary axis, shortest way
+  AbsolutePositive, // ACP(x)
+  AbsoluteNegative, // ACN(x)
 };
 
 using ExprIndex = uint32_t;

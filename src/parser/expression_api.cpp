@@ -17,10 +17,12 @@ class MapVariables : public VariableSource {
   explicit MapVariables(const std::map<std::string, double>& vars) {
     for (const auto& [k, v] : vars) upper_vars_[upper_ascii(k)] = v;
   }
-  double variable(std::string_view name, uint32_t column) const override {
-    if (auto it = upper_vars_.find(std::string(name)); it != upper_vars_.end()) return it->second;
-    if (name == "TRUE") return 1.0;
-    if (name == "FALSE") return 0.0;
+  Value variable(std::string_view name, std::span<const Value> indices, uint32_t column) const override {
+    if (indices.empty()) {
+      if (auto it = upper_vars_.find(std::string(name)); it != upper_vars_.end()) return Value(it->second);
+      if (name == "TRUE") return Value(1.0);
+      if (name == "FALSE") return Value(0.0);
+    }
     throw LineError(12550, column, "name " + std::string(name) + " not defined");
   }
   double r_parameter(double, uint32_t) const override { return 0.0; }

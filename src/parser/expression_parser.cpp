@@ -4,37 +4,14 @@
 #include <charconv>
 #include <string>
 
+#include "parser/function_table.hpp"
 #include "parser/line_error.hpp"
 
 namespace drycut::parser {
 namespace {
 
-struct FunctionName {
-  std::string_view name;
-  Function func;
-  uint8_t min_args;
-  uint8_t max_args;
-};
-
-constexpr std::array kFunctions{
-    FunctionName{"SIN", Function::Sin, 1, 1},     FunctionName{"COS", Function::Cos, 1, 1},
-    FunctionName{"TAN", Function::Tan, 1, 1},     FunctionName{"ASIN", Function::Asin, 1, 1},
-    FunctionName{"ACOS", Function::Acos, 1, 1},   FunctionName{"ATAN2", Function::Atan2, 2, 2},
-    FunctionName{"SQRT", Function::Sqrt, 1, 1},   FunctionName{"ABS", Function::Abs, 1, 1},
-    FunctionName{"POT", Function::Pot, 1, 2},     FunctionName{"TRUNC", Function::Trunc, 1, 1},
-    FunctionName{"ROUND", Function::Round, 1, 1}, FunctionName{"LN", Function::Ln, 1, 1},
-    FunctionName{"EXP", Function::Exp, 1, 1},     FunctionName{"MINVAL", Function::Min, 2, 2},
-    FunctionName{"MAXVAL", Function::Max, 2, 2},  FunctionName{"AC", Function::AbsoluteMode, 1, 1},
-    FunctionName{"IC", Function::IncrementalMode, 1, 1},
-};
-
-constexpr std::array<std::string_view, 8> kOperatorWords{"AND", "OR", "XOR", "NOT", "DIV", "MOD", "B_AND", "B_OR"};
-
-const FunctionName* find_function(std::string_view name) {
-  for (const auto& f : kFunctions)
-    if (f.name == name) return &f;
-  return nullptr;
-}
+constexpr std::array<std::string_view, 10> kOperatorWords{"AND", "OR", "XOR", "NOT", "DIV", "MOD",
+                                                         "B_AND", "B_OR", "B_XOR", "B_NOT"};
 
 // "R12" -> 12; -1 when the name is not an R parameter.
 long r_parameter_index(std::string_view name) {
@@ -56,7 +33,7 @@ bool is_expression_keyword(std::string_view name) {
 ExprIndex ExpressionParser::parse() { return comparison(); }
 
 ExprIndex ExpressionParser::comparison() {
-  ExprIndex left = logical_or();
+  ExprIndex left = concatenation();
   for (;;) {
     ExprOp op;
     switch (peek().kind) {
@@ -66,46 +43,42 @@ ExprIndex ExpressionParser::comparison() {
       case TokenKind::Greater: op = ExprOp::Greater; break;
       case TokenKind::LessEqual: op = ExprOp::LessEqual; break;
       case TokenKind::GreaterEqual: op = ExprOp::GreaterEqual; break;
-      case TokenKind::Concat:
-        throw LineError(12080, peek().column, "string concatenation << is not supported");
       default: return left;
     }
     const uint32_t column = peek().column;
     ++pos_;
-    const ExprIndex right = logical_or();
+    const ExprIndex right = concatenation();
     left = pool_.add(ExprNode{op, Function::Sin, column, left, right, 0.0, {}});
   }
 }
 
-ExprIndex ExpressionParser::logical_or() {
-  ExprIndex left = logical_xor();
-  while (is_name("OR")) {
+ExprIndex ExpressionParser::concatenation() {
+  ExprIndex left = logical_or();
+  while (peek().kind == TokenKind::Concat) {
     const uint32_t column = peek().column;
     ++pos_;
-    left = pool_.add(ExprNode{ExprOp::Or, Function::Sin, column, left, logical_xor(), 0.0, {}});
+    left = pool_.add(ExprNode{ExprOp::Concat, Function::Sin, column, left, logical_or(), 0.0, {}});
   }
   return left;
 }
 
-ExprIndex ExpressionParser::logical_xor() {
-  ExprIndex left = logical_and();
-  while (is_name("XOR")) {
+ExprIndex ExpressionParser::binary_level(std::string_view op_word, ExprOp op,
+                                         ExprIndex (ExpressionParser::*next)()) {
+  ExprIndex left = (this->*next)();
+  while (is_name(op_word)) {
     const uint32_t column = peek().column;
     ++pos_;
-    left = pool_.add(ExprNode{ExprOp::Xor, Function::Sin, column, left, logical_and(), 0.0, {}});
+    left = pool_.add(ExprNode{op, Function::Sin, column, left, (this->*next)(), 0.0, {}});
   }
   return left;
 }
 
-ExprIndex ExpressionParser::logical_and() {
-  ExprIndex left = additive();
-  while (is_name("AND")) {
-    const uint32_t column = peek().column;
-    ++pos_;
-    left = pool_.add(ExprNode{ExprOp::And, Function::Sin, column, left, additive(), 0.0, {}});
-  }
-  return left;
-}
+ExprIndex ExpressionParser::logical_or() { return binary_level("OR", ExprOp::Or, &ExpressionParser::logical_xor); }
+ExprIndex ExpressionParser::logical_xor() { return binary_level("XOR", ExprOp::Xor, &ExpressionParser::logical_and); }
+ExprIndex ExpressionParser::logical_and() { return binary_level("AND", ExprOp::And, &ExpressionParser::bit_or); }
+ExprIndex ExpressionParser::bit_or() { return binary_level("B_OR", ExprOp::BitOr, &ExpressionParser::bit_xor); }
+ExprIndex ExpressionParser::bit_xor() { return binary_level("B_XOR", ExprOp::BitXor, &ExpressionParser::bit_and); }
+ExprIndex ExpressionParser::bit_and() { return binary_level("B_AND", ExprOp::BitAnd, &ExpressionParser::additive); }
 
 ExprIndex ExpressionParser::additive() {
   ExprIndex left = multiplicative();
@@ -163,9 +136,10 @@ ExprIndex ExpressionParser::unary() {
     ++pos_;
     return unary();
   }
-  if (is_name("NOT")) {
+  if (is_name("NOT") || is_name("B_NOT")) {
+    const ExprOp op = is_name("NOT") ? ExprOp::Not : ExprOp::BitNot;
     ++pos_;
-    return pool_.add(ExprNode{ExprOp::Not, Function::Sin, column, unary(), kNoExpr, 0.0, {}});
+    return pool_.add(ExprNode{op, Function::Sin, column, unary(), kNoExpr, 0.0, {}});
   }
   return primary();
 }
@@ -198,40 +172,69 @@ ExprIndex ExpressionParser::primary() {
       }
       if (const long r = r_parameter_index(t.text); r >= 0)
         return pool_.add(ExprNode{ExprOp::RParam, Function::Sin, t.column, kNoExpr, kNoExpr, static_cast<double>(r), t.text});
-      if (peek().kind == TokenKind::LParen) {
-        const FunctionName* f = find_function(t.text);
-        if (!f) throw LineError(12550, t.column, "unknown function " + std::string(t.text));
-        ++pos_;
-        std::array<ExprIndex, 8> args{};
-        size_t count = 0;
-        if (peek().kind != TokenKind::RParen) {
-          for (;;) {
-            if (count == args.size()) throw LineError(12080, peek().column, "too many arguments");
-            args[count++] = parse();
-            if (peek().kind == TokenKind::Comma) {
-              ++pos_;
-              continue;
-            }
-            break;
-          }
-        }
-        if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
-        ++pos_;
-        if (count < f->min_args || count > f->max_args)
-          throw LineError(12080, t.column, "wrong number of arguments for " + std::string(f->name));
-        const auto first = static_cast<ExprIndex>(pool_.args.size());
-        pool_.args.insert(pool_.args.end(), args.begin(), args.begin() + static_cast<long>(count));
-        return pool_.add(ExprNode{ExprOp::Call, f->func, t.column, first, static_cast<ExprIndex>(count), 0.0, t.text});
-      }
+      if (peek().kind == TokenKind::LParen) return function_call(t);
       if (is_expression_keyword(t.text))
         throw LineError(12080, t.column, "operator " + std::string(t.text) + " without operand");
-      return pool_.add(ExprNode{ExprOp::Name, Function::Sin, t.column, kNoExpr, kNoExpr, 0.0, t.text});
+      ExprIndex first = kNoExpr;
+      const uint32_t count = peek().kind == TokenKind::LBracket ? indices(first) : 0;
+      return pool_.add(ExprNode{ExprOp::Name, Function::Sin, t.column, first, count, 0.0, t.text});
     }
     case TokenKind::End:
       throw LineError(12080, t.column, "expression expected");
     default:
       throw LineError(12080, t.column, "unexpected '" + std::string(t.text) + "' in expression");
   }
+}
+
+ExprIndex ExpressionParser::function_call(const Token& t) {
+  const FunctionInfo* f = find_function(t.text);
+  if (!f) throw LineError(12550, t.column, "unknown function " + std::string(t.text));
+  ++pos_;
+  std::array<ExprIndex, 32> args{};
+  size_t count = 0;
+  if (peek().kind != TokenKind::RParen) {
+    for (;;) {
+      if (count == args.size()) throw LineError(12080, peek().column, "too many arguments");
+      args[count++] = parse();
+      if (peek().kind == TokenKind::Comma) {
+        ++pos_;
+        continue;
+      }
+      break;
+    }
+  }
+  if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
+  ++pos_;
+  if (count < f->min_args || count > f->max_args)
+    throw LineError(12080, t.column, "wrong number of arguments for " + std::string(f->name));
+  const auto first = static_cast<ExprIndex>(pool_.args.size());
+  pool_.args.insert(pool_.args.end(), args.begin(), args.begin() + static_cast<long>(count));
+  return pool_.add(ExprNode{ExprOp::Call, f->func, t.column, first, static_cast<ExprIndex>(count), 0.0, t.text});
+}
+
+uint32_t ExpressionParser::indices(ExprIndex& first) {
+  ++pos_;  // '['
+  std::array<ExprIndex, 3> idx{};
+  uint32_t count = 0;
+  for (;;) {
+    if (count == idx.size()) throw LineError(12080, peek().column, "more than 3 array indices");
+    idx[count++] = parse();
+    if (peek().kind == TokenKind::Comma) {
+      ++pos_;
+      continue;
+    }
+    break;
+  }
+  if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
+  ++pos_;
+  first = static_cast<ExprIndex>(pool_.args.size());
+  pool_.args.insert(pool_.args.end(), idx.begin(), idx.begin() + count);
+  return count;
+}
+
+uint32_t parse_index_list(std::span<const Token> tokens, size_t& position, ExprPool& pool, ExprIndex& first) {
+  ExpressionParser parser(tokens, position, pool);
+  return parser.index_list(first);
 }
 
 }  // namespace drycut::parser

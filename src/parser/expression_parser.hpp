@@ -1,8 +1,8 @@
 #pragma once
 // Recursive-descent parser for NC expressions, with SINUMERIK operator precedence (PGA,
 // "priority of operators"), highest first:
-//   NOT, unary -  |  * / DIV MOD  |  + -  |  AND  |  XOR  |  OR  |  << (not supported)
-//   |  == <> < > <= >=
+//   NOT, B_NOT, unary -  |  * / DIV MOD  |  + -  |  B_AND  |  B_XOR  |  B_OR  |  AND  |  XOR
+//   |  OR  |  <<  |  == <> < > <= >=
 // Comparisons bind LEAST on the control, so `R1>5 AND R2<3` reads as R1 > (5 AND R2) < 3;
 // Siemens tells programmers to bracket comparisons, and so do we.
 #include <span>
@@ -19,16 +19,27 @@ class ExpressionParser {
 
   // Parses one expression starting at `position` and advances it. Throws LineError.
   ExprIndex parse();
+  // Parses "[i, j, k]" (position at '['); returns the count, `first` indexes pool.args.
+  uint32_t index_list(ExprIndex& first) { return indices(first); }
 
  private:
   ExprIndex comparison();
+  ExprIndex concatenation();
   ExprIndex logical_or();
   ExprIndex logical_xor();
   ExprIndex logical_and();
+  ExprIndex bit_or();
+  ExprIndex bit_xor();
+  ExprIndex bit_and();
   ExprIndex additive();
   ExprIndex multiplicative();
   ExprIndex unary();
   ExprIndex primary();
+  ExprIndex function_call(const Token& name);
+  // "[i, j, k]" after a name: the index expressions into pool.args; returns the count.
+  uint32_t indices(ExprIndex& first);
+  // Left-associative binary operator level: `op_word` between operands of `next`.
+  ExprIndex binary_level(std::string_view op_word, ExprOp op, ExprIndex (ExpressionParser::*next)());
 
   const Token& peek() const { return tokens_[pos_]; }
   bool is_name(std::string_view word) const {
@@ -44,5 +55,8 @@ class ExpressionParser {
 
 // True for a name that the expression grammar reserves (operators, functions).
 bool is_expression_keyword(std::string_view upper_name);
+// Parses "[e1, e2, ...]" at `position` (which must be at '[') into pool.args; returns the
+// count (1..3) and sets `first`. Used for array elements on both sides of '='.
+uint32_t parse_index_list(std::span<const Token> tokens, size_t& position, ExprPool& pool, ExprIndex& first);
 
 }  // namespace drycut::parser

@@ -73,14 +73,21 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
       while (i < n && ((s[i] >= 'A' && s[i] <= 'Z') || s[i] == '_')) ++i;
       const size_t letters_end = i;
       while (i < n && is_digit(s[i])) ++i;
-      if (letters_end - start == 1 && i > letters_end && i < n && s[i] == '.') {
-        // "X12.345": an address letter, then a decimal number.
-        push(TokenKind::Name, start, 1);
-        const size_t num_end = scan_number(s, letters_end);
-        Token t{TokenKind::Number, col(letters_end), s.substr(letters_end, num_end - letters_end), 0.0};
-        t.number = to_double(t.text, t.column);
-        out.push_back(t);
-        i = num_end;
+      if (letters_end - start == 1 && i > letters_end) {
+        // The address rule (PGA "Identifiers": names of variables and programs begin with two
+        // letters or an underscore): one letter followed by a digit is an address word. It
+        // ends with its digits, so compact blocks read as the control reads them:
+        // "N10G1X10Y20" is N10 G1 X10 Y20, "S12M3" is S12 M3.
+        if (i < n && s[i] == '.') {  // "X12.345": the letter, then a decimal number
+          push(TokenKind::Name, start, 1);
+          const size_t num_end = scan_number(s, letters_end);
+          Token t{TokenKind::Number, col(letters_end), s.substr(letters_end, num_end - letters_end), 0.0};
+          t.number = to_double(t.text, t.column);
+          out.push_back(t);
+          i = num_end;
+          continue;
+        }
+        push(TokenKind::Name, start, i - start);  // "X10", "G1", "R5", "L12", "X1" of X1=
         continue;
       }
       while (i < n && is_name_char(s[i])) ++i;
@@ -96,9 +103,7 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
       Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
       t.number = to_double(t.text, t.column);
       out.push_back(t);
-      i = end;
-      if (i < n && is_name_start(s[i]))
-        throw LineError(12080, col(i), "unexpected name right after a number");
+      i = end;  // a name may follow directly: "X.5Y2" is X.5 Y2
       continue;
     }
     switch (c) {

@@ -47,6 +47,7 @@ void LineParser::expect_end() {
 
 void LineParser::parse(std::string_view line, ParsedLine& out) {
   out.clear();
+  line_ = line;
   lexer_.tokenize(line, tokens_);
   pos_ = 0;
   parse_head(out);
@@ -94,46 +95,130 @@ void LineParser::parse_head(ParsedLine& out) {
   }
 }
 
-void LineParser::parse_jump_target(ParsedLine& out) {
+void LineParser::parse_jump_target(ParsedLine& out) { parse_jump_target(out, out.target); }
+
+void LineParser::parse_jump_target(ParsedLine& out, JumpTarget& target) {
   const Token& t = peek();
-  out.target.column = t.column;
+  target.column = t.column;
   int64_t number = 0;
-  if (t.kind == TokenKind::Name && is_block_number_name(t.text, number)) {
-    out.target.number = number;
-  } else if (t.kind == TokenKind::Name) {
-    out.target.label = t.text;
-  } else if (t.kind == TokenKind::Number) {
-    out.target.number = static_cast<int64_t>(t.number);
+  const TokenKind after = peek(1).kind;
+  const bool computed = after == TokenKind::Concat || after == TokenKind::Plus || after == TokenKind::LBracket;
+  if (t.kind == TokenKind::Name && !computed && is_block_number_name(t.text, number)) {
+    target.number = number;
+  } else if (t.kind == TokenKind::Name && !computed) {
+    target.label = t.text;  // a label, or a STRING variable holding one (decided when executed)
+  } else if (t.kind == TokenKind::Number && !computed) {
+    target.number = static_cast<int64_t>(t.number);
+  } else if (t.kind == TokenKind::String || t.kind == TokenKind::Name || t.kind == TokenKind::Number) {
+    target.expr = expression(out);  // GOTOF "LBL"<<R1
+    return;
   } else {
     throw LineError(12080, t.column, "jump target (label or block number) expected");
   }
   ++pos_;
 }
 
-void LineParser::parse_def(ParsedLine& out) {
+namespace {
+
+// Attributes of GUD definitions (unit, limits, access rights): DEF CHAN REAL PHU 42 LLI 0 X.
+bool is_definition_attribute(std::string_view w) {
+  return w == "PHU" || w == "LLI" || w == "ULI" || w == "PRLOC" || w == "APR" || w == "APW" ||
+         w == "APRP" || w == "APWP" || w == "APRB" || w == "APWB" || w == "SYNR" || w == "SYNW" || w == "SYNRW";
+}
+
+}  // namespace
+
+void LineParser::parse_type(DefEntry& e) {
   const Token& type = peek();
-  if (type.kind != TokenKind::Name ||
-      !(type.text == "INT" || type.text == "REAL" || type.text == "BOOL" || type.text == "CHAR" ||
-        type.text == "STRING" || type.text == "AXIS" || type.text == "FRAME"))
-    throw LineError(12080, type.column, "DEF needs a type: INT REAL BOOL CHAR STRING AXIS FRAME");
-  out.def_type = type.text;
+  DataType t;
+  if (type.kind != TokenKind::Name || !parse_data_type(type.text, t))
+    throw LineError(12080, type.column, "a type is needed: INT REAL BOOL CHAR STRING AXIS FRAME");
+  e.type = type.text;
   ++pos_;
-  if (out.def_type == "STRING") {  // STRING[32]
+  if (e.type == "STRING") {  // STRING[32]
     if (peek().kind != TokenKind::LBracket || peek(1).kind != TokenKind::Number ||
         peek(2).kind != TokenKind::RBracket)
       throw LineError(12080, peek().column, "STRING needs a length: STRING[n]");
+    const double n = peek(1).number;
+    if (n < 1 || n > 400 || n != static_cast<int>(n)) throw LineError(12160, peek(1).column, "STRING length must be 1..400");
+    e.string_length = static_cast<uint32_t>(n);
     pos_ += 3;
+  }
+}
+
+// "[3]", "[2,3]", "[,5]" (open dimension of a PROC array parameter): the dimension expressions.
+void LineParser::parse_dimensions(ParsedLine& out, DefEntry& e) {
+  ++pos_;  // '['
+  for (;;) {
+    if (e.rank == 3) throw LineError(12080, peek().column, "more than 3 array dimensions");
+    e.dims[e.rank++] = (peek().kind == TokenKind::Comma || peek().kind == TokenKind::RBracket) ? kNoExpr : expression(out);
+    if (peek().kind == TokenKind::Comma) {
+      ++pos_;
+      continue;
+    }
+    break;
+  }
+  if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
+  ++pos_;
+}
+
+// "= v", "= (a, b, c)", "= SET(a, b, c)", "= REP(v)"
+void LineParser::parse_initialiser(ParsedLine& out, DefEntry& e) {
+  ++pos_;  // '='
+  const bool set = peek().kind == TokenKind::Name && peek().text == "SET" && peek(1).kind == TokenKind::LParen;
+  const bool rep = peek().kind == TokenKind::Name && peek().text == "REP" && peek(1).kind == TokenKind::LParen;
+  if (set || rep) ++pos_;
+  if (!(set || rep || (peek().kind == TokenKind::LParen && e.rank > 0))) {
+    e.init_kind = InitKind::Single;
+    e.init = expression(out);
+    return;
+  }
+  ++pos_;  // '('
+  std::vector<ExprIndex> values;
+  for (;;) {
+    values.push_back(expression(out));
+    if (peek().kind == TokenKind::Comma) {
+      ++pos_;
+      continue;
+    }
+    break;
+  }
+  if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
+  ++pos_;
+  if (rep) {
+    if (values.size() != 1) throw LineError(12080, e.column, "REP takes one value");
+    e.init_kind = InitKind::Rep;
+    e.init = values.front();
+    return;
+  }
+  e.init_kind = InitKind::List;
+  e.init_first = static_cast<uint32_t>(out.pool.args.size());
+  e.init_count = static_cast<uint32_t>(values.size());
+  out.pool.args.insert(out.pool.args.end(), values.begin(), values.end());
+}
+
+void LineParser::parse_def(ParsedLine& out) {
+  if (peek().kind == TokenKind::Name && (peek().text == "NCK" || peek().text == "CHAN")) {
+    out.def_scope = peek().text;
+    ++pos_;
+  }
+  DefEntry proto;
+  parse_type(proto);
+  out.def_type = proto.type;
+  while (peek().kind == TokenKind::Name && is_definition_attribute(peek().text)) {
+    ++pos_;
+    if (peek().kind != TokenKind::End && peek().kind != TokenKind::Name) expression(out);
   }
   for (;;) {
     const Token& name = peek();
     if (name.kind != TokenKind::Name || is_expression_keyword(name.text))
       throw LineError(12080, name.column, "variable name expected");
-    DefEntry e{name.text, kNoExpr, name.column};
+    DefEntry e = proto;
+    e.name = name.text;
+    e.column = name.column;
     ++pos_;
-    if (peek().kind == TokenKind::Assign) {
-      ++pos_;
-      e.init = expression(out);
-    }
+    if (peek().kind == TokenKind::LBracket) parse_dimensions(out, e);
+    if (peek().kind == TokenKind::Assign) parse_initialiser(out, e);
     out.defs.push_back(e);
     if (peek().kind != TokenKind::Comma) break;
     ++pos_;
@@ -148,18 +233,19 @@ void LineParser::parse_proc(ParsedLine& out) {
   if (peek().kind == TokenKind::LParen) {
     ++pos_;
     while (peek().kind != TokenKind::RParen) {
-      // "REAL A", "INT B", "VAR REAL C" (call by reference: treated as by value here)
-      if (peek().kind == TokenKind::Name && peek().text == "VAR") ++pos_;
-      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "parameter type expected");
-      ++pos_;
-      if (peek().kind == TokenKind::LBracket) {  // STRING[n]
-        while (peek().kind != TokenKind::RBracket && peek().kind != TokenKind::End) ++pos_;
-        if (peek().kind == TokenKind::End) throw LineError(12080, peek().column, "missing ']'");
+      // "REAL A", "INT B", "VAR REAL C", "VAR REAL S[3]", "STRING[32] NAME"
+      DefEntry e;
+      if (peek().kind == TokenKind::Name && peek().text == "VAR") {
+        e.by_reference = true;
         ++pos_;
       }
+      parse_type(e);
       if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "parameter name expected");
-      out.defs.push_back(DefEntry{peek().text, kNoExpr, peek().column});
+      e.name = peek().text;
+      e.column = peek().column;
       ++pos_;
+      if (peek().kind == TokenKind::LBracket) parse_dimensions(out, e);
+      out.defs.push_back(e);
       if (peek().kind == TokenKind::Comma) {
         ++pos_;
         continue;
@@ -168,9 +254,63 @@ void LineParser::parse_proc(ParsedLine& out) {
     }
     ++pos_;
   }
-  // SAVE, DISPLOF, SBLOF ... attributes change nothing for a dry run.
+  // SAVE, DISPLOF, SBLOF, ACTBLOCNO ... attributes change nothing for a dry run.
   while (peek().kind == TokenKind::Name) ++pos_;
   expect_end();
+}
+
+bool LineParser::parse_case(ParsedLine& out) {
+  out.statement = Statement::Case;
+  ++pos_;
+  out.condition = expression(out);
+  if (!(peek().kind == TokenKind::Name && peek().text == "OF")) throw LineError(12080, peek().column, "OF expected in CASE");
+  ++pos_;
+  while (peek().kind != TokenKind::End) {
+    CaseBranch b;
+    if (peek().kind == TokenKind::Name && peek().text == "DEFAULT") {
+      ++pos_;
+    } else {
+      b.value = expression(out);
+    }
+    if (peek().kind != TokenKind::Name || !jump_direction(peek().text, b.jump))
+      throw LineError(12080, peek().column, "GOTOF/GOTOB/GOTO/GOTOC expected in CASE");
+    ++pos_;
+    parse_jump_target(out, b.target);
+    const bool is_default = b.value == kNoExpr;
+    out.cases.push_back(b);
+    if (is_default) break;
+  }
+  expect_end();
+  return true;
+}
+
+bool LineParser::parse_repeat_section(ParsedLine& out, bool one_block) {
+  out.statement = Statement::RepeatSection;
+  out.repeat_one_block = one_block;
+  ++pos_;
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after REPEAT");
+  out.call_name = peek().text;
+  out.target.column = peek().column;
+  ++pos_;
+  if (!one_block && peek().kind == TokenKind::Name && !(peek().text == "P" && peek(1).kind == TokenKind::Assign)) {
+    out.end_label = peek().text;
+    ++pos_;
+  }
+  if (peek().kind == TokenKind::Name && peek().text == "P" && peek(1).kind == TokenKind::Assign) {
+    pos_ += 2;
+    out.passes = expression(out);
+  }
+  expect_end();
+  return true;
+}
+
+bool LineParser::jump_direction(std::string_view word, JumpDirection& d) {
+  if (word == "GOTOF") d = JumpDirection::Forward;
+  else if (word == "GOTOB") d = JumpDirection::Backward;
+  else if (word == "GOTO") d = JumpDirection::ForwardThenBackward;
+  else if (word == "GOTOC") d = JumpDirection::NoAlarm;
+  else return false;
+  return true;
 }
 
 bool LineParser::parse_statement(ParsedLine& out) {
@@ -184,14 +324,40 @@ bool LineParser::parse_statement(ParsedLine& out) {
     expect_end();
     return true;
   };
-  auto jump_direction = [](std::string_view word, JumpDirection& d) {
-    if (word == "GOTOF") d = JumpDirection::Forward;
-    else if (word == "GOTOB") d = JumpDirection::Backward;
-    else if (word == "GOTO") d = JumpDirection::ForwardThenBackward;
-    else if (word == "GOTOC") d = JumpDirection::NoAlarm;
-    else return false;
+  // The rest of the line is taken as it is (accepted, not executed).
+  auto whole_line = [&](Statement s) {
+    out.statement = s;
+    out.call_name = w;
+    pos_ = tokens_.size() - 1;
     return true;
   };
+  if (w == "CASE") return parse_case(out);
+  if (w == "REPEAT" && peek(1).kind != TokenKind::End) return parse_repeat_section(out, false);
+  if (w == "REPEATB") return parse_repeat_section(out, true);
+  if (w == "WHEN" || w == "WHENEVER" || w == "FROM" || w == "EVERY" || w == "DO" ||
+      ((w == "ID" || w == "IDS") && peek(1).kind == TokenKind::Assign))
+    return whole_line(Statement::SyncAction);
+  if (w == "SETINT" || w == "ENABLE" || w == "DISABLE" || w == "CLRINT") return whole_line(Statement::Interrupt);
+  if (w == "EXTERN") {
+    ++pos_;
+    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "program name expected after EXTERN");
+    out.statement = Statement::Extern;
+    out.call_name = peek().text;
+    pos_ = tokens_.size() - 1;  // the parameter types declare nothing drycut needs
+    return true;
+  }
+  if (w == "DEFINE") {
+    ++pos_;
+    if (peek().kind != TokenKind::Name || !(peek(1).kind == TokenKind::Name && peek(1).text == "AS"))
+      throw LineError(12080, peek().column, "DEFINE name AS text expected");
+    out.statement = Statement::Define;
+    out.call_name = peek().text;
+    const uint32_t text_column = peek(2).column;
+    out.macro_text = line_.substr(std::min<size_t>(text_column - 1, line_.size()));
+    if (const size_t c = out.macro_text.find(';'); c != std::string_view::npos) out.macro_text = out.macro_text.substr(0, c);
+    pos_ = tokens_.size() - 1;
+    return true;
+  }
   if (w == "IF") {
     ++pos_;
     out.condition = expression(out);
@@ -309,6 +475,16 @@ void LineParser::parse_words(ParsedLine& out) {
       if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
       ++pos_;
       if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
+      ++pos_;
+      item.expr = expression(out);
+    } else if (next.kind == TokenKind::LBracket) {
+      // A[1,2]=..., $MA_COMPRESS_POS_TOL[X1]=..., G[8]=2, M[2]=3, S[1]=1000
+      ++pos_;
+      ExprIndex first = kNoExpr;
+      item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
+      item.index_first = first;
+      item.kind = ItemKind::Assign;
+      if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after an array element");
       ++pos_;
       item.expr = expression(out);
     } else if (next.kind == TokenKind::LParen) {

@@ -6,6 +6,7 @@
 
 #include "parser/lexer.hpp"
 #include "parser/parsed_line.hpp"
+#include "parser/value.hpp"
 
 namespace drycut::parser {
 
@@ -20,8 +21,15 @@ class LineParser {
   bool parse_statement(ParsedLine& out);
   void parse_words(ParsedLine& out);
   void parse_jump_target(ParsedLine& out);
+  void parse_jump_target(ParsedLine& out, JumpTarget& target);
+  void parse_type(DefEntry& e);
+  void parse_dimensions(ParsedLine& out, DefEntry& e);
+  void parse_initialiser(ParsedLine& out, DefEntry& e);
   void parse_def(ParsedLine& out);
   void parse_proc(ParsedLine& out);
+  bool parse_case(ParsedLine& out);
+  bool parse_repeat_section(ParsedLine& out, bool one_block);
+  static bool jump_direction(std::string_view word, JumpDirection& d);
   ExprIndex expression(ParsedLine& out);
   void expect_end();
   const Token& peek(size_t ahead = 0) const {
@@ -31,6 +39,7 @@ class LineParser {
 
   Lexer lexer_;
   std::vector<Token> tokens_;
+  std::string_view line_;  // the line as written (DEFINE keeps its text)
   size_t pos_ = 0;
 };
 

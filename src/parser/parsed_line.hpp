@@ -28,6 +28,12 @@ enum class Statement : uint8_t {
   Def,       // DEF type name [= value], ...
   Call,      // CALL "name" / CALL name
   Proc,      // PROC name(params)
+  Case,      // CASE expr OF const GOTOx target ... DEFAULT GOTOx target
+  RepeatSection,  // REPEAT start [end] [P=n] / REPEATB label [P=n]
+  Extern,    // EXTERN name(types): a declaration, nothing to execute
+  Define,    // DEFINE name AS text (a macro)
+  SyncAction,  // [ID=n] WHEN/WHENEVER/FROM/EVERY ... DO ...: accepted, not modelled
+  Interrupt,   // SETINT/ENABLE/DISABLE/CLRINT: accepted, not modelled
 };
 
 enum class JumpDirection : uint8_t { Forward, Backward, ForwardThenBackward, NoAlarm };
@@ -35,14 +41,21 @@ enum class JumpDirection : uint8_t { Forward, Backward, ForwardThenBackward, NoA
 struct JumpTarget {
   std::string_view label;        // upper case; empty when the target is a block number
   std::optional<int64_t> number; // N100 / 100
+  ExprIndex expr = kNoExpr;      // a computed target (STRING expression or number)
   uint32_t column = 0;
+};
+
+struct CaseBranch {
+  ExprIndex value = kNoExpr;     // kNoExpr: DEFAULT
+  JumpDirection jump = JumpDirection::Forward;
+  JumpTarget target;
 };
 
 enum class ItemKind : uint8_t {
   G,          // code
   M,          // code, extension
   Address,    // name, expr (a literal: X12.5, Y-3)
-  Assign,     // name [index], expr: X=..., R1=..., CR=..., VAR=...
+  Assign,     // name [indices], expr: X=..., R1=..., CR=..., VAR=..., A[1,2]=..., G[8]=2
   Procedure,  // name(args): CYCLE832(0.01,1), MSG("..."), SUB(1,2)
   Name,       // a bare word: ASPLINE, SOFT, RET, EKVI_POSTUPNE_45
   ToolName,   // T="name": text
@@ -57,15 +70,27 @@ struct Item {
   int extension = -1;     // M1=3 -> 1
   ExprIndex expr = kNoExpr;
   ExprIndex index = kNoExpr;  // R[index]=...
+  uint32_t index_first = 0;   // NAME[i, j, k]=...: pool.args[index_first .. +index_count)
+  uint32_t index_count = 0;
   uint32_t column = 0;
   uint32_t arg_first = 0;  // Procedure: pool.args[arg_first .. +arg_count); kNoExpr = empty arg
   uint32_t arg_count = 0;
 };
 
+enum class InitKind : uint8_t { None, Single, List, Rep };  // =v, =(a, b) or =SET(a, b), =REP(v)
+
 struct DefEntry {
   std::string_view name;
-  ExprIndex init = kNoExpr;
+  ExprIndex init = kNoExpr;    // Single, Rep
   uint32_t column = 0;
+  InitKind init_kind = InitKind::None;
+  uint32_t init_first = 0;     // List: pool.args[init_first .. +init_count)
+  uint32_t init_count = 0;
+  uint8_t rank = 0;            // array dimensions (0: scalar)
+  ExprIndex dims[3] = {kNoExpr, kNoExpr, kNoExpr};
+  std::string_view type;       // INT REAL ... (PROC parameters each have their own)
+  uint32_t string_length = 0;  // STRING[n]
+  bool by_reference = false;   // PROC parameter with VAR
 };
 
 struct ParsedLine {
@@ -84,8 +109,14 @@ struct ParsedLine {
   JumpDirection jump = JumpDirection::Forward;
   JumpTarget target;
   std::string_view def_type;      // INT REAL BOOL CHAR STRING AXIS FRAME
+  std::string_view def_scope;     // DEF NCK / CHAN (definition files); empty: local
   std::vector<DefEntry> defs;     // DEF entries; PROC parameters
-  std::string_view call_name;     // CALL / PROC name
+  std::string_view call_name;     // CALL / PROC / EXTERN / DEFINE / REPEAT start name
+  std::string_view end_label;     // REPEAT start end: the end label
+  bool repeat_one_block = false;  // REPEATB
+  ExprIndex passes = kNoExpr;     // REPEAT ... P=n
+  std::string_view macro_text;    // DEFINE name AS <text> (as written)
+  std::vector<CaseBranch> cases;  // CASE branches, DEFAULT last
   std::vector<Item> items;
   ExprPool pool;
 
@@ -98,15 +129,26 @@ struct ParsedLine {
     for_variable = {};
     target = {};
     def_type = {};
+    def_scope = {};
     defs.clear();
     call_name = {};
+    end_label = {};
+    repeat_one_block = false;
+    passes = kNoExpr;
+    macro_text = {};
+    cases.clear();
     items.clear();
     pool.clear();
   }
   bool is_control_structure() const {
-    return statement != Statement::Words && statement != Statement::Def &&
-           statement != Statement::Call && statement != Statement::Proc &&
-           statement != Statement::Goto && statement != Statement::IfGoto;
+    switch (statement) {
+      case Statement::Words: case Statement::Def: case Statement::Call: case Statement::Proc:
+      case Statement::Goto: case Statement::IfGoto: case Statement::Case: case Statement::RepeatSection:
+      case Statement::Extern: case Statement::Define: case Statement::SyncAction: case Statement::Interrupt:
+        return false;
+      default:
+        return true;
+    }
   }
 };
 

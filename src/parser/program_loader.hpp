@@ -3,10 +3,18 @@
 // block stream, one evaluated Block at a time. Calls, passes, jumps and control structures are
 // followed lazily (a stack of program frames, each streaming its file), so the expanded program
 // never exists in memory. Call/jump/control/DEF/assignment-only blocks are consumed here.
+//
+// It is split by concept over several files:
+//   program_loader.cpp        reading lines, the call stack (calls, passes, returns), alarms
+//   loader_scope.cpp          names: variables, R parameters, $ system variables, axis names
+//   loader_definitions.cpp    DEF, PROC parameters, definition files (GUD/MAC), DEFINE macros
+//   loader_control_flow.cpp   IF/WHILE/FOR/REPEAT/LOOP, GOTO*, CASE, REPEAT sections
+//   block_builder.cpp         the words of an ordinary block -> Block
 #include <array>
 #include <bitset>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -18,6 +26,8 @@
 #include "parser/line_reader.hpp"
 #include "parser/parsed_line.hpp"
 #include "parser/program_files.hpp"
+#include "parser/system_variables.hpp"
+#include "parser/variable_store.hpp"
 
 namespace drycut::parser {
 
@@ -25,6 +35,23 @@ struct LoaderOptions {
   std::vector<std::filesystem::path> search_path;  // searched after the main program's folder
   uint64_t max_steps = 100'000'000;                 // lines executed before alarm 990004
   std::array<bool, 10> skip_levels_active{};        // /0 ... /9 switched on: such blocks skipped
+  // A call of a program that is not found is warning 14011 (once per name) instead of an alarm.
+  bool missing_programs_warn = false;
+  // Folders of definition files (GUD/MAC .DEF); *.DEF beside the main program are read too.
+  std::vector<std::filesystem::path> definition_dirs;
+  // Machine and setting data, inputs and PLC data by `$` name ("$MA_COMPRESS_POS_TOL[X1]").
+  MachineDataMap machine_data;
+  // Axis names of the machine beyond the standard X Y Z A B C U V W (and their numbered forms).
+  std::vector<std::string> axis_names;
+};
+
+// An argument of a subprogram call: its value, and for VAR parameters what it refers to.
+struct CallArgument {
+  Value value;
+  bool given = false;
+  Variable* variable = nullptr;  // a variable (whole array when element is SIZE_MAX)
+  size_t element = 0;
+  double* r_parameter = nullptr;
 };
 
 class ProgramLoader {
@@ -39,6 +66,8 @@ class ProgramLoader {
 
   // Throws UsageError when the file cannot be read.
   void open_main(const std::filesystem::path& path);
+  // The interpreter's programmed state answers $P_/$AA_/$TC_ reads (in `run`).
+  void set_state_view(const ControllerStateView* view) { system_variables_.set_view(view); }
   // Fills `out` with the next executed block; false at program end. Throws AlarmError.
   bool next(Block& out);
 
@@ -51,26 +80,51 @@ class ProgramLoader {
  private:
   struct Frame;
   struct ControlFrame;
+  struct RepeatSection;
   class Scope;
+  class BlockBuilder;
+  friend class BlockBuilder;
 
   enum class PendingAction : uint8_t { None, Call, Return, EndProgram };
 
+  // program_loader.cpp
   bool read_line(Frame& f);  // next line into text_/position_; false at end of file
   bool execute_line(Block& out);
-  bool execute_words(Block& out);
-  void execute_control();
-  void execute_def();
-  void execute_proc();
-  void jump(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
-  Statement skip_forward(bool stop_at_else);
   void call_program(const std::string& written_name, uint64_t passes, uint32_t column);
   void end_of_file();
   void finish_frame();
-  void push_control(const ControlFrame& c);
-  void assign(const Item& item);
   double eval(ExprIndex e) const;
+  Value eval_value(ExprIndex e) const;
   void warn_not_modelled(std::string_view name, uint32_t column);
+  void warn(int number, const std::string& text, uint32_t column);
   [[noreturn]] void raise(int number, const std::string& detail, uint32_t column) const;
+  // block_builder.cpp
+  bool execute_words(Block& out);
+  // loader_scope.cpp
+  Variable* find_variable(std::string_view name);
+  bool is_axis_name(std::string_view name) const;
+  void assign_variable(Variable& v, uint32_t index_first, uint32_t index_count, ExprIndex value, uint32_t column);
+  void assign_r_parameter(double index, double value, uint32_t column);
+  void assign_system_variable(const Item& item, Block& out);
+  CallArgument call_argument(ExprIndex e);
+  // loader_definitions.cpp
+  void execute_def();
+  void execute_proc();
+  Variable make_variable(const DefEntry& d);
+  void initialise(Variable& v, const DefEntry& d);
+  void read_definition_files(const std::filesystem::path& main_folder);
+  void read_definition_file(const std::filesystem::path& file);
+  void expand_macros();
+  // loader_control_flow.cpp
+  void execute_control();
+  void execute_case();
+  void execute_repeat_section();
+  bool end_of_repeat_section(Frame& f);
+  void jump(JumpDirection direction, const JumpTarget& target);
+  void jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
+  std::optional<LinePosition> find_label_position(const std::string& label, bool forward_first);
+  Statement skip_forward(bool stop_at_else);
+  void push_control(const ControlFrame& c);
 
   LoaderOptions options_;
   Diagnostics& diagnostics_;
@@ -78,20 +132,24 @@ class ProgramLoader {
   std::vector<std::unique_ptr<Frame>> frames_;
   std::unique_ptr<Scope> scope_;
   std::vector<double> r_parameters_;
+  VariableTable globals_;  // GUD: definition files
+  SystemVariables system_variables_;
+  std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
 
   LineParser parser_;
   ParsedLine parsed_;
   RawLine raw_;
-  std::string text_;  // current line, decoded
+  std::string text_;  // current line, decoded (macros expanded)
   LinePosition position_;
 
   PendingAction pending_ = PendingAction::None;
   std::string pending_call_;
   uint64_t pending_passes_ = 1;
   uint32_t pending_column_ = 0;
-  std::vector<double> pending_args_;
+  std::vector<CallArgument> pending_args_;
 
   std::vector<std::string> programs_used_;
+  std::set<std::string, std::less<>> missing_programs_;
   uint64_t blocks_executed_ = 0;
   uint64_t steps_ = 0;
   bool main_has_content_ = false;

@@ -2,6 +2,7 @@
 
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
+#include "parser/loader_machine.hpp"
 #include "parser/program_loader.hpp"
 
 namespace drycut::workload {
@@ -52,6 +53,7 @@ SampledProgram sample_program(const std::filesystem::path& main_program, const m
   parser::LoaderOptions loader_options;
   loader_options.search_path = options.search_path;
   loader_options.max_steps = options.max_steps;
+  parser::add_machine(loader_options, profile);
   parser::ProgramLoader loader(loader_options, result.diagnostics);
   loader.open_main(main_program);
   interp::Interpreter interpreter(profile, tee, result.diagnostics);

@@ -93,7 +93,35 @@ TEST(Lexer, ErrorsCarryTheColumn) {
     EXPECT_EQ(e.column(), 5u);
   }
   EXPECT_THROW(lx.tokenize(std::string_view("X\0", 2), t), LineError);
-  EXPECT_THROW(lx.tokenize("X=5A", t), LineError);  // name glued to a number
+}
+
+// PGA Fundamentals, "Identifiers": names begin with two letters (or an underscore), so one
+// letter followed by a digit is an address word that ends with its digits.
+TEST(Lexer, CompactAddressWordsSplitAtTheNextLetter) {
+  Lexer lx;
+  std::vector<Token> t;
+  lx.tokenize("N10G1X10Y-2.5", t);
+  ASSERT_EQ(t.size(), 7u);
+  EXPECT_EQ(t[0].text, "N10");
+  EXPECT_EQ(t[1].text, "G1");
+  EXPECT_EQ(t[2].text, "X10");
+  EXPECT_EQ(t[3].text, "Y");
+  EXPECT_EQ(t[4].kind, TokenKind::Minus);
+  EXPECT_DOUBLE_EQ(t[5].number, 2.5);
+  lx.tokenize("s12m3", t);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[0].text, "S12");
+  EXPECT_EQ(t[1].text, "M3");
+  lx.tokenize("X.5Y2", t);  // a name may follow a number directly
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[0].text, "X");
+  EXPECT_DOUBLE_EQ(t[1].number, 0.5);
+  EXPECT_EQ(t[2].text, "Y2");
+  lx.tokenize("X1=10 EKVI_45 CYCLE81", t);  // X1= is an extended address; names stay whole
+  EXPECT_EQ(t[0].text, "X1");
+  EXPECT_EQ(t[1].kind, TokenKind::Assign);
+  EXPECT_EQ(t[3].text, "EKVI_45");
+  EXPECT_EQ(t[4].text, "CYCLE81");
 }
 
 }  // namespace

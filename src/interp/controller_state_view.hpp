@@ -1,0 +1,33 @@
+#pragma once
+// The interpreter's state as `$` system variables, for the loader: programmed state ($P_GG,
+// $P_EP, $P_F, $P_TOOLNO, $P_TOOL ...), actual state ($AA_IM, $AA_IW: in a dry run the actual
+// position is the programmed one) and tool data ($TC_DP3 length, $TC_DP6 radius). The loader
+// reads them while it prepares the next block, after the interpreter executed the previous
+// one: the values are those of the control's block preparation (STOPRE changes nothing here).
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "interp/interpreter.hpp"
+#include "machine/machine_profile.hpp"
+#include "parser/system_variables.hpp"
+
+namespace drycut::interp {
+
+class InterpreterStateView : public parser::ControllerStateView {
+ public:
+  InterpreterStateView(const Interpreter& interpreter, const machine::MachineProfile& profile)
+      : interpreter_(interpreter), profile_(profile) {}
+  std::optional<parser::Value> read_system_variable(std::string_view upper_name,
+                                                    std::span<const parser::Value> indices) const override;
+
+ private:
+  std::optional<double> g_group_index(int group) const;
+  std::optional<double> axis_position(std::span<const parser::Value> indices) const;
+  std::optional<double> tool_datum(int parameter, std::span<const parser::Value> indices) const;
+
+  const Interpreter& interpreter_;
+  const machine::MachineProfile& profile_;
+};
+
+}  // namespace drycut::interp

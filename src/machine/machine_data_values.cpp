@@ -1,0 +1,34 @@
+#include "machine/machine_data_values.hpp"
+
+namespace drycut::machine {
+
+std::map<std::string, double, std::less<>> machine_data_values(const MachineProfile& p) {
+  std::map<std::string, double, std::less<>> md;
+  // Units as the control shows them: mm/min, m/s^2, m/s^3, s.
+  md["$MN_SCALING_SYSTEM_IS_METRIC"] = 1;  // MD10240: metric base system
+  md["$MN_SYSCLOCK_CYCLE_TIME"] = p.ipo_cycle_s;  // MD10050 (with MD10070 = 1)
+  md["$MN_IPO_SYSCLOCK_TIME_RATIO"] = 1;
+  md["$MC_MAX_PATH_JERK"] = p.path_jerk_mm_s3 / 1000.0;                 // MD20600
+  md["$MC_CURV_EFFECT_ON_PATH_ACCEL"] = p.curv_effect_on_path_accel;    // MD20602
+  md["$MC_CUBIC_SPLINE_BLOCKS"] = p.cubic_spline_blocks;                // MD20160
+  md["$MC_CUTCOM_MAXNUM_CHECK_BLOCKS"] = p.cutcom_maxnum_check_blocks;  // MD20240
+  md["$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS"] = p.cutcom_maxnum_dummy_blocks;  // MD20250
+  md["$MN_CIRCLE_ERROR_CONST"] = p.circle_error_const_mm;              // MD21000 (channel in newer lists)
+  md["$MC_CIRCLE_ERROR_CONST"] = p.circle_error_const_mm;
+  md["$MC_CIRCLE_ERROR_FACTOR"] = p.circle_error_factor;               // MD21010
+  md["$SC_CUTCOM_DECEL_LIMIT"] = p.cutcom_decel_limit;                 // SD42528
+  for (const AxisData& a : p.axes) {
+    for (const std::string& axis : {a.name + "1", a.name}) {
+      md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * 60.0;        // MD32000
+      md["$MA_MAX_AX_ACCEL[" + axis + "]"] = a.max_accel_mm_s2 / 1000.0;       // MD32300
+      md["$MA_MAX_AX_JERK[" + axis + "]"] = a.max_jerk_mm_s3 / 1000.0;         // MD32431
+      md["$MA_MAX_ACCEL_OVL_FACTOR[" + axis + "]"] = p.max_accel_ovl_factor;   // MD32310
+      md["$MA_POS_LIMIT_PLUS[" + axis + "]"] = a.max_mm;                        // MD36110
+      md["$MA_POS_LIMIT_MINUS[" + axis + "]"] = a.min_mm;                       // MD36100
+    }
+  }
+  for (const auto& [name, value] : p.machine_data) md[name] = value;
+  return md;
+}
+
+}  // namespace drycut::machine

@@ -1,0 +1,319 @@
+// The words of an ordinary block become a Block: G and M words, addresses (plain, extended
+// X1= / H7= / S1=, indirect G[group]= / M[n]= / S[n]= / H[n]=, AX[axis]=), variable and system
+// variable assignments, modelled commands with their arguments, SETAL, and at most one
+// subprogram call (by name, L number or with arguments) with P passes.
+#include <algorithm>
+#include <cmath>
+
+#include "parser/command_table.hpp"
+#include "parser/expression_parser.hpp"
+#include "parser/line_error.hpp"
+#include "parser/loader_frame.hpp"
+
+namespace drycut::parser {
+
+class ProgramLoader::BlockBuilder {
+ public:
+  BlockBuilder(ProgramLoader& loader, Block& out) : l_(loader), out_(out), f_(*loader.frames_.back()) {}
+
+  bool build() {
+    out_.clear();
+    for (const Item& item : l_.parsed_.items) {
+      switch (item.kind) {
+        case ItemKind::G: g_word(item, item.code); break;
+        case ItemKind::M: m_word(item); break;
+        case ItemKind::Address: address(item); break;
+        case ItemKind::Assign: assignment(item); break;
+        case ItemKind::Procedure: procedure(item); break;
+        case ItemKind::Name: name(item); break;
+        case ItemKind::ToolName:
+          out_.tool_name = std::string(item.name);
+          has_words_ = true;
+          break;
+        case ItemKind::LCall: set_call(item.name, item.column); break;
+        case ItemKind::Passes: passes_ = static_cast<uint64_t>(std::max<int64_t>(1, item.code)); break;
+      }
+    }
+    return finish();
+  }
+
+ private:
+  void g_word(const Item& item, int64_t code) {
+    const Support s = g_code_support(code);
+    if (s == Support::Unknown) throw LineError(12470, item.column, "G" + std::to_string(code));
+    if (s == Support::NotModelled) {
+      l_.warn_not_modelled("G" + std::to_string(code), item.column);
+      return;
+    }
+    out_.g.push_back(GWord{static_cast<int>(code), item.column});
+    l_.g_used_.set(static_cast<size_t>(code));
+    has_words_ = true;
+  }
+
+  void m_word(const Item& item) { add_m(item, item.code, item.expr, item.extension); }
+
+  void add_m(const Item& item, int64_t code, ExprIndex expr, int extension) {
+    if (expr != kNoExpr) {
+      const double v = l_.eval(expr);
+      if (v < 0 || v != std::trunc(v) || v > 999) throw LineError(12160, item.column, "M value must be an integer 0..999");
+      code = static_cast<int64_t>(v);
+    }
+    if (code > 999) throw LineError(12160, item.column, "M value must be an integer 0..999");
+    out_.m.push_back(MWord{static_cast<int>(code), extension, item.column});
+    l_.m_used_.set(static_cast<size_t>(code));
+    has_words_ = true;
+    if (code == 17) action_ = PendingAction::Return;
+    if (code == 2 || code == 30) action_ = PendingAction::EndProgram;
+  }
+
+  void address(const Item& item) {
+    if (!is_address(item.name)) throw LineError(12550, item.column, "address " + std::string(item.name) + " not defined");
+    out_.addresses.push_back(AddressWord{std::string(item.name), l_.parsed_.pool[item.expr].value, ValueMode::Default, item.column});
+    has_words_ = true;
+  }
+
+  // X=R1*2, X=AC(5), X=IC(-1), C=DC(0), A=ACP(90)
+  void address_value(std::string name, const Item& item) {
+    const ExprNode& top = l_.parsed_.pool[item.expr];
+    ValueMode mode = ValueMode::Default;
+    ExprIndex value_expr = item.expr;
+    if (top.op == ExprOp::Call) {
+      switch (top.func) {
+        case Function::AbsoluteMode: mode = ValueMode::Absolute; break;
+        case Function::IncrementalMode: mode = ValueMode::Incremental; break;
+        case Function::DirectMode:
+        case Function::AbsolutePositive:
+        case Function::AbsoluteNegative:
+          // Rotary positioning by direction: the end position is the same absolute value.
+          l_.warn_not_modelled(std::string(top.text) + "() direction of a rotary axis (taken as AC)", top.column);
+          mode = ValueMode::Absolute;
+          break;
+        default: break;
+      }
+      if (mode != ValueMode::Default) value_expr = l_.parsed_.pool.args[top.a];
+    }
+    out_.addresses.push_back(AddressWord{std::move(name), l_.eval(value_expr), mode, item.column});
+    has_words_ = true;
+  }
+
+  void assignment(const Item& item) {
+    if (item.name == "P" && item.index == kNoExpr && item.index_count == 0) {
+      // At most 9999 passes; checked before the conversion (out of range it is undefined).
+      const double p = l_.eval(item.expr);
+      if (!(p <= 9999)) throw LineError(12160, item.column, "P (passes) must be at most 9999");
+      passes_ = static_cast<uint64_t>(std::max(1.0, p));
+      return;
+    }
+    if (item.index != kNoExpr) {  // R[i]=
+      l_.assign_r_parameter(l_.eval(item.index), l_.eval(item.expr), item.column);
+      return;
+    }
+    if (!item.name.empty() && item.name[0] == '$') {
+      l_.assign_system_variable(item, out_);
+      has_words_ = true;  // the interpreter applies what it models
+      return;
+    }
+    if (Variable* v = l_.find_variable(item.name)) {
+      l_.assign_variable(*v, item.index_first, item.index_count, item.expr, item.column);
+      return;
+    }
+    if (!is_address(item.name)) {
+      // OVR=50, FA[X]=100, POS[X]=10, SPOS=0, CTOL=0.01: valid settings drycut does not model.
+      const Support s = command_support(item.name);
+      if (s == Support::NotModelled) {
+        l_.warn_not_modelled(std::string(item.name) + "=", item.column);
+        return;
+      }
+      if (s == Support::NoEffect) return;
+    }
+    if (item.index_count > 0) {
+      indexed_address(item);
+      return;
+    }
+    if (is_r_parameter_name(item.name)) {
+      l_.assign_r_parameter(std::stod(std::string(item.name.substr(1))), l_.eval(item.expr), item.column);
+      return;
+    }
+    if (is_address(item.name) || is_extended_address(item.name)) {
+      address_value(std::string(item.name), item);
+      return;
+    }
+    throw LineError(12550, item.column, "name " + std::string(item.name) + " not defined");
+  }
+
+  // G[8]=2, M[2]=3, S[1]=1000, H[7]=40, AX[AXNAME("X")]=10, T[1]=5, D[1]=2
+  void indexed_address(const Item& item) {
+    if (item.index_count != 1) throw LineError(12410, item.column, std::string(item.name) + "[...] takes one index");
+    const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+    if (item.name == "AX") {
+      if (index.kind != ValueKind::Axis && !index.is_text()) throw LineError(12150, item.column, "AX[...] needs an axis");
+      address_value(index.text, item);
+      return;
+    }
+    const double n = as_number(index, item.column);
+    if (!(n >= 0 && n <= 99) || n != std::trunc(n)) throw LineError(12430, item.column, "index must be 0..99");
+    const int k = static_cast<int>(n);
+    if (item.name == "G") {
+      const double code_index = l_.eval(item.expr);
+      const int code = g_code_of_group(k, static_cast<int>(code_index));
+      if (code < 0) {
+        l_.warn_not_modelled("G[" + std::to_string(k) + "]=" + number_to_text(code_index) + " (G group)", item.column);
+        return;
+      }
+      g_word(item, code);
+      return;
+    }
+    if (item.name == "M") {
+      add_m(item, 0, item.expr, k);
+      return;
+    }
+    if (item.name == "S" || item.name == "H" || item.name == "T" || item.name == "D") {
+      address_value(std::string(item.name) + std::to_string(k), item);
+      return;
+    }
+    throw LineError(12550, item.column, "name " + std::string(item.name) + " not defined");
+  }
+
+  CommandWord& add_command(const Item& item) {
+    if (l_.commands_used_.find(item.name) == l_.commands_used_.end()) l_.commands_used_.emplace(item.name);
+    has_words_ = true;
+    CommandWord& c = out_.commands.emplace_back();
+    c.name.assign(item.name);
+    c.column = item.column;
+    return c;
+  }
+
+  void procedure(const Item& item) {
+    if (item.name == "SETAL") {
+      set_alarm(item);
+      return;
+    }
+    const Support s = command_support(item.name);
+    if (s == Support::NotModelled) {
+      l_.warn_not_modelled(item.name, item.column);
+      return;
+    }
+    if (s == Support::NoEffect) return;
+    if (s == Support::Modelled) {
+      CommandWord& c = add_command(item);
+      c.has_parentheses = true;
+      for (uint32_t k = 0; k < item.arg_count; ++k) {
+        const ExprIndex a = l_.parsed_.pool.args[item.arg_first + k];
+        if (a == kNoExpr) {
+          c.args.emplace_back(std::string());
+          continue;
+        }
+        const Value v = l_.eval_value(a);
+        if (v.is_number()) c.args.emplace_back(v.number);
+        else c.args.emplace_back(v.text);  // strings, axis names (SPLINEPATH(1,X,Y,Z))
+      }
+      return;
+    }
+    if (is_expression_keyword(item.name))
+      throw LineError(12080, item.column, "function " + std::string(item.name) + " used as a block word");
+    set_call(item.name, item.column);  // a subprogram with parameters: SUB(1, 2)
+    for (uint32_t k = 0; k < item.arg_count; ++k)
+      call_args_.push_back(l_.call_argument(l_.parsed_.pool.args[item.arg_first + k]));
+  }
+
+  // SETAL(n[, "text"]): a cycle or user alarm; the control stops the program with it.
+  void set_alarm(const Item& item) {
+    if (item.arg_count < 1) throw LineError(12080, item.column, "SETAL needs an alarm number");
+    const double n = l_.eval(l_.parsed_.pool.args[item.arg_first]);
+    if (!(n >= 60000 && n <= 69999) || n != std::trunc(n))
+      throw LineError(12160, item.column, "SETAL: alarm number must be 60000..69999");
+    std::string text = "user alarm";
+    if (item.arg_count > 1) {
+      const ExprIndex t = l_.parsed_.pool.args[item.arg_first + 1];
+      if (t != kNoExpr) text = as_text(l_.eval_value(t));
+    }
+    throw LineError(static_cast<int>(n), item.column, text);
+  }
+
+  void name(const Item& item) {
+    const Support s = command_support(item.name);
+    if (s == Support::NotModelled) {
+      l_.warn_not_modelled(item.name, item.column);
+      return;
+    }
+    if (s == Support::NoEffect) return;
+    if (s == Support::Modelled) {
+      add_command(item);
+      if (item.name == "RET") action_ = PendingAction::Return;
+      return;
+    }
+    if (l_.find_variable(item.name) || is_address(item.name))
+      throw LineError(12080, item.column, std::string(item.name) + " without a value");
+    if (is_expression_keyword(item.name))
+      throw LineError(12080, item.column, "operator " + std::string(item.name) + " outside an expression");
+    if (!call_name_.empty()) {
+      // Two bare words ("GOTOFF ENDE"): blame the one that looks like a misspelled command.
+      std::string_view bad = item.name;
+      uint32_t bad_column = item.column;
+      std::string_view guess = near_miss(call_name_);
+      if (!guess.empty()) {
+        bad = call_name_;
+        bad_column = call_column_;
+      } else {
+        guess = near_miss(item.name);
+      }
+      throw LineError(12550, bad_column, "name " + std::string(bad) + " not defined" +
+                                             (guess.empty() ? "" : " (did you mean " + std::string(guess) + "?)"));
+    }
+    set_call(item.name, item.column);
+  }
+
+  void set_call(std::string_view name, uint32_t column) {
+    if (!call_name_.empty()) throw LineError(12080, column, "two program calls in one block");
+    call_name_.assign(name);
+    call_column_ = column;
+  }
+
+  bool finish() {
+    f_.executed_block = f_.executed_block || has_words_ || !call_name_.empty();
+    if (!call_name_.empty()) {
+      // A misspelled command next to other words is not a call: say what it probably is.
+      if (has_words_) {
+        const std::string_view guess = near_miss(call_name_);
+        if (!guess.empty())
+          throw LineError(12550, call_column_, "name " + call_name_ + " not defined (did you mean " + std::string(guess) + "?)");
+      }
+      l_.pending_ = PendingAction::Call;
+      l_.pending_call_ = call_name_;
+      l_.pending_passes_ = passes_;
+      l_.pending_column_ = call_column_;
+      l_.pending_args_ = std::move(call_args_);
+    }
+    if (action_ != PendingAction::None) {
+      if (l_.pending_ == PendingAction::Call) throw LineError(12080, call_column_, "program call and program end in one block");
+      l_.pending_ = action_;
+    }
+    if (!has_words_) return false;
+    out_.file = f_.file;
+    out_.line = l_.position_.line;
+    out_.text.assign(trimmed(l_.text_));
+    out_.number = l_.parsed_.number;
+    out_.program_level = static_cast<int>(l_.frames_.size()) - 1;
+    ++l_.blocks_executed_;
+    return true;
+  }
+
+  static bool is_r_parameter_name(std::string_view n) {
+    return n.size() >= 2 && n[0] == 'R' &&
+           std::all_of(n.begin() + 1, n.end(), [](char c) { return c >= '0' && c <= '9'; });
+  }
+
+  ProgramLoader& l_;
+  Block& out_;
+  Frame& f_;
+  std::string call_name_;
+  uint32_t call_column_ = 0;
+  uint64_t passes_ = 1;
+  bool has_words_ = false;
+  PendingAction action_ = PendingAction::None;
+  std::vector<CallArgument> call_args_;
+};
+
+bool ProgramLoader::execute_words(Block& out) { return BlockBuilder(*this, out).build(); }
+
+}  // namespace drycut::parser

@@ -1,0 +1,364 @@
+// Control flow of the loader: structured loops and IF (PGA Job Planning "Program flow control"),
+// jumps GOTOF/GOTOB/GOTO/GOTOC to labels, block numbers or computed targets, CASE, and program
+// section repetition REPEAT/REPEATB.
+#include <cmath>
+
+#include "parser/ascii_case.hpp"
+#include "parser/line_error.hpp"
+#include "parser/loader_frame.hpp"
+#include "parser/text_decoding.hpp"
+
+namespace drycut::parser {
+
+namespace {
+constexpr size_t kMaxCachedLabels = 100000;
+}
+
+void ProgramLoader::push_control(const ControlFrame& c) {
+  // Re-entering a structure (after a jump out of it) drops whatever was left above it.
+  auto& stack = frames_.back()->control;
+  for (size_t i = 0; i < stack.size(); ++i)
+    if (stack[i].head.offset == c.head.offset) {
+      stack.resize(i);
+      break;
+    }
+  stack.push_back(c);
+}
+
+void ProgramLoader::execute_control() {
+  Frame& f = *frames_.back();
+  auto& stack = f.control;
+  const Statement s = parsed_.statement;
+  const uint32_t column = parsed_.statement_column;
+  auto expect_top = [&](Statement opener) {
+    if (stack.empty() || stack.back().kind != opener)
+      throw LineError(12640, column, std::string(statement_keyword(s)) + " without " + statement_keyword(opener));
+  };
+  ControlFrame c;
+  c.kind = s;
+  c.head = position_;
+  c.body = f.reader.tell();
+  switch (s) {
+    case Statement::If:
+      if (eval(parsed_.condition) != 0.0) {
+        push_control(c);
+      } else if (skip_forward(true) == Statement::Else) {
+        c.kind = Statement::If;
+        push_control(c);
+      }
+      return;
+    case Statement::Else:
+      expect_top(Statement::If);
+      stack.pop_back();
+      skip_forward(false);
+      return;
+    case Statement::EndIf:
+      expect_top(Statement::If);
+      stack.pop_back();
+      return;
+    case Statement::While:
+      if (eval(parsed_.condition) != 0.0)
+        push_control(c);
+      else
+        skip_forward(false);
+      return;
+    case Statement::EndWhile: {
+      expect_top(Statement::While);
+      const LinePosition head = stack.back().head;
+      stack.pop_back();
+      f.reader.seek(head);  // the WHILE line evaluates its condition again
+      return;
+    }
+    case Statement::For: {
+      const double start = eval(parsed_.condition);
+      c.end = eval(parsed_.for_end);
+      c.variable = std::string(parsed_.for_variable);
+      if (Variable* v = find_variable(c.variable)) {
+        v->set(v->element({}, column), Value(start), column);
+      } else if (c.variable.size() >= 2 && c.variable[0] == 'R') {
+        assign_r_parameter(std::stod(c.variable.substr(1)), start, column);
+      } else {
+        throw LineError(12550, column, "FOR variable " + c.variable + " not defined");
+      }
+      if (start > c.end)
+        skip_forward(false);
+      else
+        push_control(c);
+      return;
+    }
+    case Statement::EndFor: {
+      expect_top(Statement::For);
+      ControlFrame& top = stack.back();
+      // Advance the loop variable: an INT/REAL variable or an R parameter.
+      double value;
+      if (Variable* v = find_variable(top.variable)) {
+        const size_t e = v->element({}, column);
+        value = v->get(e).number + 1.0;
+        v->set(e, Value(value), column);
+      } else {
+        const double index = std::stod(top.variable.substr(1));
+        value = r_parameters_[static_cast<size_t>(index)] += 1.0;
+      }
+      if (value <= top.end)
+        f.reader.seek(top.body);
+      else
+        stack.pop_back();
+      return;
+    }
+    case Statement::Repeat:
+    case Statement::Loop:
+      push_control(c);
+      return;
+    case Statement::Until:
+      expect_top(Statement::Repeat);
+      if (eval(parsed_.condition) == 0.0)
+        f.reader.seek(stack.back().body);
+      else
+        stack.pop_back();
+      return;
+    case Statement::EndLoop:
+      expect_top(Statement::Loop);
+      f.reader.seek(stack.back().body);
+      return;
+    default:
+      return;
+  }
+}
+
+Statement ProgramLoader::skip_forward(bool stop_at_else) {
+  // Skips the body of a structure whose condition is false: to the matching closer (or ELSE).
+  Frame& f = *frames_.back();
+  const LinePosition start = position_;
+  const std::string start_text = text_;
+  const Statement opener = parsed_.statement == Statement::Else ? Statement::If : parsed_.statement;
+  int depth = 0;
+  while (read_line(f)) {
+    if (is_blank_or_comment(text_)) continue;
+    try {
+      parser_.parse(text_, parsed_);
+    } catch (const LineError& e) {
+      raise(e.number(), e.detail(), e.column());
+    }
+    if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
+      f.labels.insert_or_assign(std::string(parsed_.label), position_);
+    const Statement s = parsed_.statement;
+    if (is_opener(s)) {
+      ++depth;
+    } else if (depth == 0 && stop_at_else && s == Statement::Else) {
+      return s;
+    } else if (is_closer(s)) {
+      if (depth > 0) {
+        --depth;
+      } else {
+        if (s != closer_of(opener))
+          raise(12640, std::string(statement_keyword(s)) + " where " + statement_keyword(closer_of(opener)) + " was expected",
+                parsed_.statement_column);
+        return s;
+      }
+    }
+  }
+  position_ = start;
+  text_ = start_text;
+  raise(12640, std::string(statement_keyword(opener)) + " without " + statement_keyword(closer_of(opener)), 1);
+}
+
+void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
+  if (target.expr != kNoExpr) {
+    // A computed target: a string is a label, a number a block number.
+    const Value v = eval_value(target.expr);
+    if (v.is_number()) {
+      jump_to(direction, {}, static_cast<int64_t>(v.number), target.column);
+    } else {
+      jump_to(direction, upper_ascii(v.text), std::nullopt, target.column);
+    }
+    return;
+  }
+  if (!target.label.empty()) {
+    // GOTOF NAME: a STRING variable holding the label, or the label itself.
+    if (Variable* v = find_variable(target.label); v && v->type() == DataType::String && v->rank() == 0) {
+      jump_to(direction, upper_ascii(v->get(0).text), std::nullopt, target.column);
+      return;
+    }
+  }
+  jump_to(direction, std::string(target.label), target.number, target.column);
+}
+
+void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number,
+                            uint32_t column) {
+  Frame& f = *frames_.back();
+  const LinePosition from = position_;
+  const LinePosition after = f.reader.tell();
+  const std::string from_text = text_;
+  auto matches = [&]() { return label.empty() ? parsed_.number == number : parsed_.label == label; };
+  // Reads the next line for a search; false at end of file. Parses it (a line that cannot be
+  // parsed stops the search with its own alarm).
+  auto scan_line = [&]() {
+    for (;;) {
+      if (!f.reader.next(raw_)) return false;
+      position_ = raw_.position;
+      if (raw_.too_long) continue;
+      decode_line_to_utf8(raw_.bytes, text_);
+      if (is_blank_or_comment(text_)) continue;
+      try {
+        parser_.parse(text_, parsed_);
+      } catch (const LineError& e) {
+        raise(e.number(), e.detail(), e.column());
+      }
+      if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
+        f.labels.insert_or_assign(std::string(parsed_.label), position_);
+      return true;
+    }
+  };
+  if (direction != JumpDirection::Backward) {
+    // Forward: structures closed on the way are left, so their frames go.
+    int depth = 0;
+    while (scan_line()) {
+      if (matches()) {
+        f.reader.seek(position_);
+        return;
+      }
+      if (is_opener(parsed_.statement)) ++depth;
+      else if (is_closer(parsed_.statement)) {
+        if (depth > 0) --depth;
+        else if (!f.control.empty()) f.control.pop_back();
+      }
+    }
+  }
+  if (direction != JumpDirection::Forward) {
+    std::optional<LinePosition> found;
+    if (!label.empty()) {
+      if (auto it = f.labels.find(label); it != f.labels.end() && it->second.line < from.line) found = it->second;
+    }
+    if (!found) {
+      f.reader.seek(LinePosition{});
+      while (scan_line() && position_.line < from.line)
+        if (matches()) found = position_;
+    }
+    if (found) {
+      // Structures that start at or after the target are left (and entered again later).
+      auto& stack = f.control;
+      while (!stack.empty() && stack.back().head.line >= found->line) stack.pop_back();
+      f.reader.seek(*found);
+      return;
+    }
+  }
+  position_ = from;
+  text_ = from_text;
+  if (direction == JumpDirection::NoAlarm) {
+    f.reader.seek(after);
+    return;
+  }
+  raise(14080, label.empty() ? "N" + std::to_string(*number) : label, column);
+}
+
+void ProgramLoader::execute_case() {
+  // CASE expr OF c1 GOTOF l1 c2 GOTOF l2 DEFAULT GOTOF l3: the first constant equal to the
+  // value jumps; none -> DEFAULT; no DEFAULT -> the next block.
+  const Value v = eval_value(parsed_.condition);
+  const std::vector<CaseBranch> branches = parsed_.cases;  // the jump reuses parsed_
+  for (const CaseBranch& b : branches) {
+    bool hit = b.value == kNoExpr;
+    if (!hit) {
+      const Value c = eval_value(b.value);
+      hit = (c.is_number() && v.is_number()) ? real_equal(c.number, v.number)
+                                             : (!c.is_number() && !v.is_number() && c.text == v.text);
+    }
+    if (hit) {
+      JumpTarget target = b.target;
+      std::string label(target.label);  // the view points into the parsed line
+      if (target.expr != kNoExpr) {
+        jump(b.jump, target);
+      } else {
+        jump_to(b.jump, label, target.number, target.column);
+      }
+      return;
+    }
+  }
+}
+
+std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label, bool) {
+  Frame& f = *frames_.back();
+  if (auto it = f.labels.find(label); it != f.labels.end()) return it->second;
+  // Not passed yet: search the whole file (labels cached on the way).
+  const LinePosition resume = f.reader.tell();
+  const LinePosition here = position_;
+  const std::string here_text = text_;
+  std::optional<LinePosition> found;
+  f.reader.seek(LinePosition{});
+  RawLine raw;
+  std::string line;
+  ParsedLine parsed;
+  LineParser parser;
+  while (f.reader.next(raw)) {
+    if (raw.too_long) continue;
+    decode_line_to_utf8(raw.bytes, line);
+    if (is_blank_or_comment(line)) continue;
+    try {
+      parser.parse(line, parsed);
+    } catch (const LineError&) {
+      continue;
+    }
+    if (parsed.label == label) {
+      found = raw.position;
+      break;
+    }
+  }
+  f.reader.seek(resume);
+  position_ = here;
+  text_ = here_text;
+  return found;
+}
+
+void ProgramLoader::execute_repeat_section() {
+  // REPEAT start P=n: lines from label `start` up to this REPEAT line; REPEAT start end P=n:
+  // from `start` to the line labelled `end`, inclusive; REPEATB label P=n: that one line.
+  // The section runs n more times (P=1 when not written), then reading goes on after REPEAT.
+  Frame& f = *frames_.back();
+  double passes = 1;
+  if (parsed_.passes != kNoExpr) passes = eval(parsed_.passes);
+  if (!(passes >= 0 && passes <= 9999)) throw LineError(12160, parsed_.target.column, "P must be 0..9999");
+  const std::string start_label(parsed_.call_name);
+  const std::string end_label(parsed_.end_label);
+  const bool one_block = parsed_.repeat_one_block;
+  const uint32_t column = parsed_.target.column;
+  const LinePosition repeat_line = position_;
+  RepeatSection r;
+  r.resume = f.reader.tell();
+  r.remaining = static_cast<uint64_t>(passes);
+  const auto start = find_label_position(start_label, false);
+  if (!start) throw LineError(14080, column, start_label);
+  r.start = *start;
+  if (one_block || !end_label.empty()) {
+    const auto end = one_block ? start : find_label_position(end_label, true);
+    if (!end) throw LineError(14080, column, end_label);
+    // The section ends after the end line: find where the next line starts.
+    f.reader.seek(*end);
+    RawLine raw;
+    f.reader.next(raw);
+    r.stop_offset = f.reader.tell().offset;
+  } else {
+    r.stop_offset = repeat_line.offset;
+  }
+  if (r.remaining == 0 || r.stop_offset <= r.start.offset) {
+    f.reader.seek(r.resume);
+    return;
+  }
+  --r.remaining;
+  f.repeats.push_back(r);
+  f.reader.seek(r.start);
+}
+
+bool ProgramLoader::end_of_repeat_section(Frame& f) {
+  RepeatSection& r = f.repeats.back();
+  if (position_.offset != r.stop_offset) return false;
+  if (r.remaining > 0) {
+    --r.remaining;
+    f.reader.seek(r.start);
+  } else {
+    f.reader.seek(r.resume);
+    f.repeats.pop_back();
+  }
+  return true;
+}
+
+}  // namespace drycut::parser

@@ -1,0 +1,203 @@
+// Definitions in the loader: DEF (local variables, before the first executable block, alarm
+// 14500 after it), PROC parameters (by value, or VAR by reference), definition files
+// (GUD: DEF NCK/CHAN; MAC: DEFINE name AS text) and macro expansion.
+#include <algorithm>
+#include <cmath>
+
+#include "parser/line_error.hpp"
+#include "parser/loader_frame.hpp"
+#include "parser/text_decoding.hpp"
+
+namespace drycut::parser {
+
+namespace {
+
+constexpr double kMaxArrayElements = 1e6;
+
+bool is_name_char(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '$';
+}
+
+}  // namespace
+
+Variable ProgramLoader::make_variable(const DefEntry& d) {
+  DataType type = DataType::Real;
+  parse_data_type(d.type, type);
+  std::vector<uint32_t> dims;
+  double elements = 1;
+  for (uint8_t k = 0; k < d.rank; ++k) {
+    if (d.dims[k] == kNoExpr) throw LineError(12080, d.column, "array " + std::string(d.name) + " needs its size");
+    const double n = eval(d.dims[k]);
+    if (!(n >= 1) || n != std::trunc(n)) throw LineError(12160, d.column, "array size must be a whole number >= 1");
+    elements *= n;
+    if (elements > kMaxArrayElements) throw LineError(12160, d.column, "array larger than 1,000,000 elements");
+    dims.push_back(static_cast<uint32_t>(n));
+  }
+  return Variable(std::string(d.name), type, d.string_length ? d.string_length : 400, dims);
+}
+
+void ProgramLoader::initialise(Variable& v, const DefEntry& d) {
+  v.reset();
+  switch (d.init_kind) {
+    case InitKind::None: return;
+    case InitKind::Single:
+      if (v.rank() > 0) {  // DEF REAL A[3]=5: every element
+        const Value x = eval_value(d.init);
+        for (size_t i = 0; i < v.size(); ++i) v.set(i, x, d.column);
+      } else {
+        v.set(0, eval_value(d.init), d.column);
+      }
+      return;
+    case InitKind::Rep: {
+      const Value x = eval_value(d.init);
+      for (size_t i = 0; i < v.size(); ++i) v.set(i, x, d.column);
+      return;
+    }
+    case InitKind::List:
+      if (d.init_count > v.size())
+        throw LineError(14130, d.column, std::to_string(d.init_count) + " values for " + std::to_string(v.size()) + " elements");
+      for (uint32_t i = 0; i < d.init_count; ++i) v.set(i, eval_value(parsed_.pool.args[d.init_first + i]), d.column);
+      return;
+  }
+}
+
+void ProgramLoader::execute_def() {
+  Frame& f = *frames_.back();
+  if (f.executed_block)
+    throw LineError(14500, parsed_.statement_column, "DEF after the first executable block");
+  const bool global = !parsed_.def_scope.empty();
+  VariableTable& table = global ? globals_ : f.locals;
+  for (const DefEntry& d : parsed_.defs) {
+    Variable* existing = table.find(d.name);
+    if (existing && existing->def_line != position_.line)
+      throw LineError(12170, d.column, "name " + std::string(d.name) + " defined twice");
+    if (!existing) {
+      existing = &table.add(make_variable(d));
+      existing->def_line = position_.line;
+    }
+    initialise(*existing, d);
+  }
+}
+
+void ProgramLoader::execute_proc() {
+  // Binds the call's arguments to the parameters: by value (converted to the parameter's type),
+  // or VAR by reference (the parameter aliases the caller's variable, element or R parameter).
+  Frame& f = *frames_.back();
+  for (size_t i = 0; i < parsed_.defs.size(); ++i) {
+    const DefEntry& d = parsed_.defs[i];
+    if (f.locals.find(d.name)) continue;  // a new pass binds again only what is new
+    DefEntry shape = d;
+    for (auto& dim : shape.dims) dim = kNoExpr;
+    const CallArgument* a = i < f.args.size() && f.args[i].given ? &f.args[i] : nullptr;
+    std::vector<uint32_t> dims;
+    if (d.rank > 0) {
+      if (!(a && a->variable && a->element == SIZE_MAX))
+        throw LineError(12410, d.column, "array parameter " + std::string(d.name) + " needs an array (VAR)");
+      for (int k = 0; k < a->variable->rank(); ++k) dims.push_back(a->variable->dim(k));
+    }
+    DataType type = DataType::Real;
+    parse_data_type(d.type, type);
+    Variable& v = f.locals.add(Variable(std::string(d.name), type, d.string_length ? d.string_length : 400, dims));
+    v.def_line = position_.line;
+    if (!a) continue;
+    if (d.by_reference) {
+      if (a->r_parameter) v.alias_number(a->r_parameter);
+      else if (a->variable) v.alias(a->variable, a->element == SIZE_MAX ? 0 : a->element);
+      else v.set(0, a->value, d.column);  // a value where a reference is possible: a copy
+    } else {
+      v.set(0, a->value, d.column);
+    }
+  }
+}
+
+void ProgramLoader::read_definition_files(const std::filesystem::path& main_folder) {
+  std::vector<std::filesystem::path> dirs = options_.definition_dirs;
+  dirs.push_back(main_folder);
+  for (const auto& dir : dirs) {
+    std::error_code ec;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      std::string ext = entry.path().extension().string();
+      for (char& c : ext) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+      if (ext == ".DEF" && entry.is_regular_file(ec)) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    for (const auto& file : files) read_definition_file(file);
+  }
+}
+
+void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
+  // A definition file holds DEF NCK/CHAN ... and DEFINE ... AS ... lines (plus M17/M30 and a
+  // %_N_NAME_DEF header); everything else in it is ignored with a warning.
+  auto frame = std::make_unique<Frame>();
+  if (!frame->reader.open(file)) return;
+  frame->file = std::make_shared<const std::string>(file.string());
+  frames_.push_back(std::move(frame));
+  Frame& f = *frames_.back();
+  while (f.reader.next(raw_)) {
+    position_ = raw_.position;
+    if (raw_.too_long) continue;
+    decode_line_to_utf8(raw_.bytes, text_);
+    if (!macros_.empty()) expand_macros();
+    if (is_blank_or_comment(text_)) continue;
+    try {
+      parser_.parse(text_, parsed_);
+      if (parsed_.statement == Statement::Def) {
+        DefEntry dummy;
+        const bool was_global = !parsed_.def_scope.empty();
+        if (!was_global) parsed_.def_scope = "CHAN";  // a DEF in a GUD file is global
+        execute_def();
+      } else if (parsed_.statement == Statement::Define) {
+        macros_.insert_or_assign(std::string(parsed_.call_name), std::string(trimmed(parsed_.macro_text)));
+      } else if (!(parsed_.statement == Statement::Words && parsed_.items.size() == 1 &&
+                   parsed_.items[0].kind == ItemKind::M)) {
+        warn(990002, "only DEF and DEFINE are read from a definition file", 1);
+      }
+    } catch (const LineError& e) {
+      frames_.pop_back();
+      raise(e.number(), e.detail(), e.column());
+    }
+  }
+  frames_.pop_back();
+}
+
+void ProgramLoader::expand_macros() {
+  // Whole names outside strings and comments are replaced by their macro text (once: a macro's
+  // text is not expanded again, so a macro cannot recurse).
+  std::string out;
+  out.reserve(text_.size() + 16);
+  bool changed = false;
+  size_t i = 0;
+  while (i < text_.size()) {
+    const char c = text_[i];
+    if (c == ';') break;
+    if (c == '"') {
+      const size_t close = text_.find('"', i + 1);
+      const size_t end = close == std::string::npos ? text_.size() : close + 1;
+      out.append(text_, i, end - i);
+      i = end;
+      continue;
+    }
+    if (is_name_char(c) && !(c >= '0' && c <= '9')) {
+      size_t j = i;
+      while (j < text_.size() && is_name_char(text_[j])) ++j;
+      std::string word = text_.substr(i, j - i);
+      for (char& w : word) w = static_cast<char>(w >= 'a' && w <= 'z' ? w - 'a' + 'A' : w);
+      if (auto it = macros_.find(word); it != macros_.end()) {
+        out += it->second;
+        changed = true;
+      } else {
+        out.append(text_, i, j - i);
+      }
+      i = j;
+      continue;
+    }
+    out += c;
+    ++i;
+  }
+  if (!changed) return;
+  out.append(text_, i, std::string::npos);
+  text_ = std::move(out);
+}
+
+}  // namespace drycut::parser

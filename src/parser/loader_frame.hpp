@@ -1,0 +1,100 @@
+#pragma once
+// Internal to the loader's files: one level of the call stack (a program being executed) and
+// the open control structures and REPEAT sections inside it.
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "parser/expression_evaluator.hpp"
+#include "parser/program_loader.hpp"
+
+namespace drycut::parser {
+
+struct ProgramLoader::ControlFrame {
+  Statement kind = Statement::If;
+  LinePosition head;  // the opening line
+  LinePosition body;  // the line after it
+  double end = 0.0;   // FOR: last value
+  std::string variable;  // FOR: loop variable
+};
+
+// REPEAT start [end] P=n / REPEATB: lines from `start` up to (not including) `stop` are run
+// `remaining` more times, then reading goes on at `resume`.
+struct ProgramLoader::RepeatSection {
+  LinePosition start;
+  uint64_t stop_offset = 0;
+  LinePosition resume;
+  uint64_t remaining = 0;
+};
+
+struct ProgramLoader::Frame {
+  std::shared_ptr<const std::string> file;  // as shown in alarms
+  std::string program;                      // upper-case program name
+  LineReader reader;
+  uint64_t passes_left = 1;
+  std::vector<CallArgument> args;  // call arguments, bound by PROC
+  std::vector<ControlFrame> control;
+  std::vector<RepeatSection> repeats;
+  std::unordered_map<std::string, LinePosition> labels;  // labels passed so far
+  VariableTable locals;            // LUD
+  bool executed_block = false;     // DEF is only allowed before the first executable block
+};
+
+// Values of names for the expression evaluator.
+class ProgramLoader::Scope : public VariableSource {
+ public:
+  explicit Scope(ProgramLoader& loader) : loader_(loader) {}
+  Value variable(std::string_view name, std::span<const Value> indices, uint32_t column) const override;
+  double r_parameter(double index, uint32_t column) const override;
+  Value environment_function(const ExprNode& call, std::span<const Value> args) const override;
+
+ private:
+  ProgramLoader& loader_;
+};
+
+inline std::string_view trimmed(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+inline bool is_blank_or_comment(std::string_view line) {
+  const std::string_view t = trimmed(line);
+  return t.empty() || t.front() == ';' || t.front() == '%';
+}
+
+inline bool is_opener(Statement s) {
+  return s == Statement::If || s == Statement::While || s == Statement::For || s == Statement::Repeat ||
+         s == Statement::Loop;
+}
+inline bool is_closer(Statement s) {
+  return s == Statement::EndIf || s == Statement::EndWhile || s == Statement::EndFor || s == Statement::Until ||
+         s == Statement::EndLoop;
+}
+inline Statement closer_of(Statement opener) {
+  switch (opener) {
+    case Statement::If: return Statement::EndIf;
+    case Statement::While: return Statement::EndWhile;
+    case Statement::For: return Statement::EndFor;
+    case Statement::Repeat: return Statement::Until;
+    default: return Statement::EndLoop;
+  }
+}
+inline const char* statement_keyword(Statement s) {
+  switch (s) {
+    case Statement::If: return "IF";
+    case Statement::Else: return "ELSE";
+    case Statement::EndIf: return "ENDIF";
+    case Statement::While: return "WHILE";
+    case Statement::EndWhile: return "ENDWHILE";
+    case Statement::For: return "FOR";
+    case Statement::EndFor: return "ENDFOR";
+    case Statement::Repeat: return "REPEAT";
+    case Statement::Until: return "UNTIL";
+    case Statement::Loop: return "LOOP";
+    case Statement::EndLoop: return "ENDLOOP";
+    default: return "?";
+  }
+}
+
+}  // namespace drycut::parser

@@ -1,0 +1,148 @@
+// Names in the loader: user variables (local LUD, then global GUD), R parameters, `$` system
+// variables through the registry, TRUE/FALSE, and bare axis names (AXIS values: X, Y1, AX3).
+#include <algorithm>
+#include <cmath>
+
+#include "parser/line_error.hpp"
+#include "parser/loader_frame.hpp"
+
+namespace drycut::parser {
+
+namespace {
+
+constexpr size_t kRParameterCount = 1000;
+
+bool all_digits(std::string_view s) {
+  return std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+}  // namespace
+
+Variable* ProgramLoader::find_variable(std::string_view name) {
+  if (!frames_.empty())
+    if (Variable* v = frames_.back()->locals.find(name)) return v;
+  return globals_.find(name);
+}
+
+bool ProgramLoader::is_axis_name(std::string_view name) const {
+  // Geometry and special axes by letter, numbered machine axes (X1, A2), AX<n> channel axes,
+  // SP<n> spindles, and the machine's own names from the profile.
+  if (name.empty()) return false;
+  if (std::string_view("XYZABCUVW").find(name[0]) != std::string_view::npos && all_digits(name.substr(1)))
+    return true;
+  if ((name.substr(0, 2) == "AX" || name.substr(0, 2) == "SP") && name.size() > 2 && all_digits(name.substr(2)))
+    return true;
+  return std::find(options_.axis_names.begin(), options_.axis_names.end(), name) != options_.axis_names.end();
+}
+
+Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Value> indices, uint32_t column) const {
+  ProgramLoader& l = loader_;
+  if (!name.empty() && name[0] == '$') {
+    const auto r = l.system_variables_.read(name, indices);
+    if (r.assumed)
+      l.warn(990007, std::string(system_variable_class_name(classify_system_variable(name))) + " " +
+                         system_variable_key(name, indices) + " not in the machine profile: 0 assumed",
+             column);
+    return r.value;
+  }
+  if (const Variable* v = l.find_variable(name)) return v->get(v->element(indices, column));
+  if (indices.empty()) {
+    if (name == "TRUE") return Value(1.0);
+    if (name == "FALSE") return Value(0.0);
+    if (l.is_axis_name(name)) return Value::of_axis(std::string(name));
+  }
+  throw LineError(12550, column, "name " + std::string(name) + " not defined");
+}
+
+double ProgramLoader::Scope::r_parameter(double index, uint32_t column) const {
+  if (index < 0 || index >= static_cast<double>(kRParameterCount) || index != std::trunc(index))
+    throw LineError(12430, column, "R parameter index must be 0..999");
+  return loader_.r_parameters_[static_cast<size_t>(index)];
+}
+
+Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span<const Value> args) const {
+  ProgramLoader& l = loader_;
+  switch (call.func) {
+    case Function::IsVar: {
+      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "ISVAR needs a name as a string");
+      std::string name = args[0].text;
+      for (char& c : name)
+        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+      if (const size_t b = name.find('['); b != std::string::npos) name.resize(b);
+      const bool known = l.find_variable(name) != nullptr ||
+                         (!name.empty() && name[0] == '$' && l.system_variables_.is_known(name)) ||
+                         (name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1)));
+      return Value(known ? 1.0 : 0.0);
+    }
+    case Function::GetT: {
+      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");
+      const Value key = Value::of_text(args[0].text);
+      const auto r = l.system_variables_.read("$TC_GETT", std::span<const Value>(&key, 1));
+      if (r.assumed) l.warn(990007, "GETT(\"" + args[0].text + "\"): tool table not available, -1 assumed", call.column);
+      return r.assumed ? Value(-1.0) : r.value;
+    }
+    default:
+      l.warn_not_modelled("FRAME expression " + std::string(call.text) + "() (frame values are not computed)", call.column);
+      return Value::of_frame();
+  }
+}
+
+void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t index_count, ExprIndex value,
+                                    uint32_t column) {
+  Value idx[3];
+  for (uint32_t k = 0; k < index_count && k < 3; ++k) idx[k] = eval_value(parsed_.pool.args[index_first + k]);
+  const size_t e = v.element(std::span<const Value>(idx, index_count), column);
+  v.set(e, eval_value(value), column);
+}
+
+void ProgramLoader::assign_r_parameter(double index, double value, uint32_t column) {
+  scope_->r_parameter(index, column);  // range check
+  r_parameters_[static_cast<size_t>(index)] = value;
+}
+
+void ProgramLoader::assign_system_variable(const Item& item, Block& out) {
+  Value idx[3];
+  for (uint32_t k = 0; k < item.index_count && k < 3; ++k) idx[k] = eval_value(parsed_.pool.args[item.index_first + k]);
+  const std::span<const Value> indices(idx, item.index_count);
+  const Value v = eval_value(item.expr);
+  if (classify_system_variable(item.name) == SystemVariableClass::Unknown)
+    warn(990002, "system variable " + std::string(item.name) + " written (not modelled)", item.column);
+  system_variables_.write(item.name, indices, v);
+  SystemWrite& w = out.system_writes.emplace_back();
+  w.name.assign(item.name);
+  w.indices.assign(indices.begin(), indices.end());
+  w.value = v;
+  w.column = item.column;
+}
+
+CallArgument ProgramLoader::call_argument(ExprIndex e) {
+  CallArgument a;
+  if (e == kNoExpr) return a;  // an empty argument: the parameter keeps its default
+  a.given = true;
+  const ExprNode& n = parsed_.pool[e];
+  if (n.op == ExprOp::RParam || n.op == ExprOp::RParamIndex) {
+    const double index = n.op == ExprOp::RParam ? n.value : eval(n.a);
+    scope_->r_parameter(index, n.column);
+    a.r_parameter = &r_parameters_[static_cast<size_t>(index)];
+    a.value = Value(*a.r_parameter);
+    return a;
+  }
+  if (n.op == ExprOp::Name && (n.text.empty() || n.text[0] != '$')) {
+    if (Variable* v = find_variable(n.text)) {
+      a.variable = v;
+      if (n.b == 0 && v->rank() > 0) {  // a whole array (VAR parameter)
+        a.element = SIZE_MAX;
+        return a;
+      }
+      Value idx[3];
+      for (uint32_t k = 0; k < n.b && k < 3; ++k) idx[k] = eval_value(parsed_.pool.args[n.a + k]);
+      a.element = v->element(std::span<const Value>(idx, n.b), n.column);
+      a.value = v->get(a.element);
+      return a;
+    }
+  }
+  a.value = eval_value(e);
+  return a;
+}
+
+}  // namespace drycut::parser

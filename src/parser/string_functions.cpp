@@ -1,0 +1,134 @@
+#include "parser/string_functions.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "parser/ascii_case.hpp"
+#include "parser/expression_evaluator.hpp"
+#include "parser/line_error.hpp"
+
+namespace drycut::parser {
+namespace {
+
+const std::string& text_arg(std::span<const Value> args, size_t k, uint32_t column) {
+  if (k >= args.size() || args[k].is_number())
+    throw LineError(12150, column, "a string argument is needed");
+  return args[k].text;
+}
+
+// A character argument: a one-character string or a character code.
+char char_arg(std::span<const Value> args, size_t k, uint32_t column) {
+  if (k < args.size() && args[k].is_number()) return static_cast<char>(static_cast<int>(args[k].number));
+  const std::string& s = text_arg(args, k, column);
+  if (s.empty()) throw LineError(12150, column, "a character is needed");
+  return s[0];
+}
+
+// The number a text holds, as the control reads numbers ("12", "-1.5", " 3 ").
+bool parse_number(const std::string& text, double& out) {
+  size_t b = 0, e = text.size();
+  while (b < e && text[b] == ' ') ++b;
+  while (e > b && text[e - 1] == ' ') --e;
+  if (b == e) return false;
+  const char* first = text.data() + b;
+  if (*first == '+') ++first;
+  const auto r = std::from_chars(first, text.data() + e, out);
+  return r.ec == std::errc() && r.ptr == text.data() + e && std::isfinite(out);
+}
+
+std::string lower_ascii(std::string s) {
+  for (char& c : s)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return s;
+}
+
+}  // namespace
+
+Value string_function(Function f, std::span<const Value> args, uint32_t column) {
+  switch (f) {
+    case Function::StrLen: return Value(static_cast<double>(text_arg(args, 0, column).size()));
+    case Function::Index: {
+      const auto p = text_arg(args, 0, column).find(char_arg(args, 1, column));
+      return Value(p == std::string::npos ? -1.0 : static_cast<double>(p));
+    }
+    case Function::RIndex: {
+      const auto p = text_arg(args, 0, column).rfind(char_arg(args, 1, column));
+      return Value(p == std::string::npos ? -1.0 : static_cast<double>(p));
+    }
+    case Function::MIndex: {
+      const auto p = text_arg(args, 0, column).find_first_of(text_arg(args, 1, column));
+      return Value(p == std::string::npos ? -1.0 : static_cast<double>(p));
+    }
+    case Function::SubStr: {
+      const std::string& s = text_arg(args, 0, column);
+      const double start = as_number(args[1], column);
+      const double count = args.size() > 2 ? as_number(args[2], column) : static_cast<double>(s.size());
+      if (start < 0 || count < 0) throw LineError(12150, column, "SUBSTR: negative position or length");
+      if (start >= static_cast<double>(s.size())) return Value::of_text("");
+      return Value::of_text(s.substr(static_cast<size_t>(start), static_cast<size_t>(std::fmin(count, 1e9))));
+    }
+    case Function::ToUpper: return Value::of_text(upper_ascii(text_arg(args, 0, column)));
+    case Function::ToLower: return Value::of_text(lower_ascii(text_arg(args, 0, column)));
+    case Function::Number: {
+      double v = 0;
+      if (!parse_number(text_arg(args, 0, column), v))
+        throw LineError(14051, column, "NUMBER: \"" + args[0].text + "\" is not a number");
+      return Value(v);
+    }
+    case Function::IsNumber: {
+      double v = 0;
+      return Value(parse_number(text_arg(args, 0, column), v) ? 1.0 : 0.0);
+    }
+    case Function::Sprint: return Value::of_text(sprint(args, column));
+    case Function::AxName: return Value::of_axis(upper_ascii(text_arg(args, 0, column)));
+    case Function::AxString:
+      if (args.empty() || args[0].kind != ValueKind::Axis) throw LineError(12150, column, "AXSTRING needs an axis");
+      return Value::of_text(args[0].text);
+    default: throw LineError(12550, column, "not a string function");
+  }
+}
+
+std::string sprint(std::span<const Value> args, uint32_t column) {
+  const std::string& format = text_arg(args, 0, column);
+  std::string out;
+  size_t next = 1;
+  auto take = [&]() -> const Value& {
+    if (next >= args.size()) throw LineError(12150, column, "SPRINT: more formats than values");
+    return args[next++];
+  };
+  char buf[64];
+  for (size_t i = 0; i < format.size(); ++i) {
+    if (format[i] != '%' || i + 1 == format.size()) {
+      out += format[i];
+      continue;
+    }
+    ++i;
+    int decimals = 6;
+    if (format[i] == '.') {  // %.3F
+      decimals = 0;
+      while (i + 1 < format.size() && format[i + 1] >= '0' && format[i + 1] <= '9')
+        decimals = decimals * 10 + (format[++i] - '0');
+      decimals = std::min(decimals, 20);
+      ++i;
+      if (i >= format.size()) break;
+    }
+    switch (format[i] & ~0x20) {  // upper case
+      case 'D':
+      case 'I': std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(std::llround(as_number(take(), column)))); out += buf; break;
+      case 'F': std::snprintf(buf, sizeof buf, "%.*f", decimals, as_number(take(), column)); out += buf; break;
+      case 'E': std::snprintf(buf, sizeof buf, "%.*E", decimals, as_number(take(), column)); out += buf; break;
+      case 'X': std::snprintf(buf, sizeof buf, "%llX", static_cast<unsigned long long>(std::llround(as_number(take(), column)))); out += buf; break;
+      case 'B': out += as_number(take(), column) != 0.0 ? "TRUE" : "FALSE"; break;
+      case 'C': out += static_cast<char>(static_cast<int>(as_number(take(), column))); break;
+      case 'S': out += as_text(take()); break;
+      default:
+        if (format[i] == '%') out += '%';
+        else throw LineError(12150, column, std::string("SPRINT: unknown format %") + format[i]);
+    }
+  }
+  return out;
+}
+
+}  // namespace drycut::parser

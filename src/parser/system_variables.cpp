@@ -1,0 +1,82 @@
+#include "parser/system_variables.hpp"
+
+#include <array>
+
+#include "parser/expression_evaluator.hpp"
+
+namespace drycut::parser {
+namespace {
+
+bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+
+constexpr std::array<std::string_view, 8> kIoPrefixes{"$A_IN", "$A_OUT", "$A_INA", "$A_OUTA",
+                                                       "$A_DBB", "$A_DBW", "$A_DBD", "$A_DBR"};
+
+}  // namespace
+
+SystemVariableClass classify_system_variable(std::string_view n) {
+  if (starts_with(n, "$MN_") || starts_with(n, "$MC_") || starts_with(n, "$MA_") || starts_with(n, "$MM_"))
+    return SystemVariableClass::MachineData;
+  if (starts_with(n, "$SN_") || starts_with(n, "$SC_") || starts_with(n, "$SA_"))
+    return SystemVariableClass::SettingData;
+  for (auto p : kIoPrefixes)
+    if (n == p) return SystemVariableClass::InputOutput;
+  if (starts_with(n, "$TC_")) return SystemVariableClass::ToolData;
+  if (starts_with(n, "$P_") || starts_with(n, "$AA_") || starts_with(n, "$AC_") || starts_with(n, "$VA_") ||
+      starts_with(n, "$A_") || starts_with(n, "$PI") || starts_with(n, "$R"))
+    return SystemVariableClass::State;
+  return SystemVariableClass::Unknown;
+}
+
+std::string_view system_variable_class_name(SystemVariableClass c) {
+  switch (c) {
+    case SystemVariableClass::MachineData: return "machine data";
+    case SystemVariableClass::SettingData: return "setting data";
+    case SystemVariableClass::State: return "controller state";
+    case SystemVariableClass::InputOutput: return "input/output";
+    case SystemVariableClass::ToolData: return "tool data";
+    default: return "system variable";
+  }
+}
+
+std::string system_variable_key(std::string_view upper_name, std::span<const Value> indices) {
+  std::string key(upper_name);
+  if (indices.empty()) return key;
+  key += '[';
+  for (size_t k = 0; k < indices.size(); ++k) {
+    if (k) key += ',';
+    key += as_text(indices[k]);
+  }
+  key += ']';
+  return key;
+}
+
+SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::span<const Value> indices) const {
+  const std::string key = system_variable_key(name, indices);
+  if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
+  if (auto it = values_.find(key); it != values_.end()) return {Value(it->second), false};
+  const SystemVariableClass c = classify_system_variable(name);
+  if (view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData))
+    if (auto v = view_->read_system_variable(name, indices)) return {*v, false};
+  if (c == SystemVariableClass::InputOutput) return {Value(0.0), false};
+  // Without the interpreter (`check`) state reads 0 silently: values matter only to `run`.
+  if (!view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) return {Value(0.0), false};
+  return {Value(0.0), true};
+}
+
+void SystemVariables::write(std::string_view name, std::span<const Value> indices, const Value& v) {
+  std::string key = system_variable_key(name, indices);
+  if (v.is_number()) {
+    texts_.erase(key);
+    values_[std::move(key)] = v.number;
+  } else {
+    values_.erase(key);
+    texts_[std::move(key)] = v.text;
+  }
+}
+
+bool SystemVariables::is_known(std::string_view name) const {
+  return classify_system_variable(name) != SystemVariableClass::Unknown;
+}
+
+}  // namespace drycut::parser

@@ -1,0 +1,64 @@
+#pragma once
+// The one registry of `$` system variables (PGA Job Planning / "System variables" list manual).
+// Each name falls into a class by its prefix, and the class says where its value comes from:
+//
+//   $MN_ $MC_ $MA_ $SN_ $SC_ $SA_   machine and setting data: the profile's `machine_data` map
+//                                   (key as written, e.g. "$MA_COMPRESS_POS_TOL[X1]"); a name
+//                                   the profile lacks reads 0 with one warning naming it
+//   $P_ $AA_ $AC_ $VA_ $A_ (state)   programmed and actual state: asked of the controller view
+//                                   (the interpreter in `run`; in a dry run actual = programmed)
+//   $A_IN $A_OUT $A_INA $A_OUTA $A_DBB $A_DBW $A_DBD $A_DBR   inputs, outputs, PLC data:
+//                                   the profile's `machine_data` map, default 0 (documented)
+//   $TC_                            tool data: written values, else the controller view
+//   anything else                   0 with one warning naming it (never an alarm: the control
+//                                   knows thousands of names, a false alarm is the worst bug)
+//
+// A write is kept (later reads see it) and handed to the interpreter with the block
+// (Block::system_writes), which applies what it models (tool data, frames).
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "parser/value.hpp"
+
+namespace drycut::parser {
+
+enum class SystemVariableClass : uint8_t { MachineData, SettingData, State, InputOutput, ToolData, Unknown };
+
+SystemVariableClass classify_system_variable(std::string_view upper_name);
+std::string_view system_variable_class_name(SystemVariableClass c);
+
+// "$MA_X" + [X1] -> "$MA_X[X1]": the key of machine data maps and written values.
+std::string system_variable_key(std::string_view upper_name, std::span<const Value> indices);
+
+// What the interpreter knows: programmed state, actual state (= programmed in a dry run), tools.
+class ControllerStateView {
+ public:
+  virtual ~ControllerStateView() = default;
+  virtual std::optional<Value> read_system_variable(std::string_view upper_name, std::span<const Value> indices) const = 0;
+};
+
+using MachineDataMap = std::map<std::string, double, std::less<>>;
+
+class SystemVariables {
+ public:
+  explicit SystemVariables(MachineDataMap machine_data) : values_(std::move(machine_data)) {}
+  void set_view(const ControllerStateView* view) { view_ = view; }
+
+  struct ReadResult {
+    Value value;
+    bool assumed = false;  // not known: the documented default was used (warn once)
+  };
+  ReadResult read(std::string_view upper_name, std::span<const Value> indices) const;
+  void write(std::string_view upper_name, std::span<const Value> indices, const Value& v);
+  bool is_known(std::string_view upper_name) const;
+
+ private:
+  MachineDataMap values_;                         // numbers: machine data, I/O, written values
+  std::map<std::string, std::string, std::less<>> texts_;  // written strings
+  const ControllerStateView* view_ = nullptr;
+};
+
+}  // namespace drycut::parser
