@@ -28,7 +28,7 @@ Frame::Frame(const Matrix3d& linear, const Vector3d& translation)
     : linear_(linear), translation_(translation) {
   pure_translation_ = linear_ == Matrix3d::Identity();
   const double det = linear_.determinant();
-  invertible_ = std::isfinite(det) && std::abs(det) > 1e-12;
+  invertible_ = std::isfinite(det) && det != 0.0;
   if (pure_translation_) {
     inverse_ = Matrix3d::Identity();
   } else if (invertible_) {

@@ -346,13 +346,16 @@ void Interpreter::apply_frame_instruction(const BlockContext& ctx) {
   for (const AddressWord& a : ctx.block.addresses) {
     if (const int i = axis_index(a.name); i >= 0) {
       words.axes[static_cast<size_t>(i)] = kind == FrameInstruction::Trans ? a.value * unit : a.value;
-      if (kind == FrameInstruction::Scale && a.value == 0)
-        raise(ctx, kUnsupported, "scale factor 0 (the frame would have no inverse)", a.column);
     } else if (a.name == "RPL") {
       words.rpl = a.value;
     }
   }
-  state_.frames.program(instruction_frame(kind, words, state_.plane_normal_axis()), ctx.additive_frame);
+  const Frame component = instruction_frame(kind, words, state_.plane_normal_axis());
+  // A scale factor 0 (or a product beyond the double range) leaves no way back from the machine
+  // to the workpiece system.
+  if (!component.invertible() || !state_.frames.programmable().then(component).invertible())
+    raise(ctx, kUnsupported, "frame without an inverse (scale factor 0 or out of range)");
+  state_.frames.program(component, ctx.additive_frame);
 }
 
 void Interpreter::define_pole(const BlockContext& ctx) {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "interp/cutter_compensation.hpp"
 #include "interp/frame_chain.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp_test_support.hpp"
@@ -223,6 +224,13 @@ TEST(Frames, UnwrittenAxesKeepTheirWorkpieceCoordinate) {
   EXPECT_TRUE(near(end_of(*r, 2), Vector3d(-5, 1, 0)));
 }
 
+TEST(Frames, ScaleFactorZeroIsRefused) {
+  auto r = run_program("G0 X0 Y0 Z0\nSCALE X0 Y1\nG0 X1\nM30\n");
+  ASSERT_TRUE(r->alarm);
+  EXPECT_EQ(r->alarm->number, 990006);
+  EXPECT_EQ(r->alarm->where.line, 2u);
+}
+
 TEST(Frames, TiltedPlaneWithCompensationIsNotModelled) {
   auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nROT X30\nG41 G1 X10 F100\nM30\n");
   ASSERT_TRUE(r->alarm);
@@ -238,6 +246,38 @@ TEST(Frames, SetSettableFrameTakesEffectOnTheNextSelection) {
   EXPECT_TRUE(near(interp.settable_frame(2).to_outer(Vector3d::Zero()), Vector3d(7, 0, 0)));
   interp.set_programmable_frame(Frame::translation({0, 1, 0}));
   EXPECT_TRUE(near(interp.frame().to_outer(Vector3d::Zero()), Vector3d(0, 1, 0)));
+}
+
+}  // namespace
+}  // namespace drycut::interp::testing
+
+namespace drycut::interp::testing {
+namespace {
+
+TEST(Frames, MirroredContourIsCompensatedOnTheMirroredSide) {
+  // The square (0,0) (10,0) (10,10) (0,10) with G41 (inside, r = 2) under MIRROR X0 is the square
+  // x in [-10, 0] on the machine; the tool centre runs inside it: x = -8 on the second side,
+  // y = 8 on the third.
+  const std::string text = "T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG41 G1 X10 Y0 F100\nY10\nX0\nG40 X0 Y20\nM30\n";
+  const auto dir = std::filesystem::temp_directory_path() / ("drycut_frames_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "MAIN.MPF") << text;
+  Diagnostics diagnostics;
+  CollectingSink sink;
+  const machine::MachineProfile profile = test_profile();
+  CutterCompensation compensation(sink, profile, diagnostics);
+  parser::ProgramLoader loader({}, diagnostics);
+  loader.open_main(dir / "MAIN.MPF");
+  Interpreter interp(profile, compensation, diagnostics);
+  parser::Block block;
+  while (loader.next(block) && !interp.ended()) interp.execute(block);
+  interp.finish();
+  std::filesystem::remove_all(dir);
+  auto m = sink.motions();
+  ASSERT_GE(m.size(), 4u);
+  EXPECT_TRUE(near(m[2].curve->start(), Vector3d(-8, 0, 0), 1e-6));  // NORM: the approach ends normal to the next side
+  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(-8, 8, 0), 1e-6));
+  EXPECT_TRUE(near(m[3].curve->end(), Vector3d(0, 8, 0), 1e-6));
 }
 
 }  // namespace
