@@ -5,6 +5,7 @@
 
 #include "interp/cutter_compensation.hpp"
 #include "interp/frame_chain.hpp"
+#include "interp/frame_functions.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp_test_support.hpp"
 
@@ -278,6 +279,34 @@ TEST(Frames, MirroredContourIsCompensatedOnTheMirroredSide) {
   EXPECT_TRUE(near(m[2].curve->start(), Vector3d(-8, 0, 0), 1e-6));  // NORM: the approach ends normal to the next side
   EXPECT_TRUE(near(m[2].curve->end(), Vector3d(-8, 8, 0), 1e-6));
   EXPECT_TRUE(near(m[3].curve->end(), Vector3d(0, 8, 0), 1e-6));
+}
+
+}  // namespace
+}  // namespace drycut::interp::testing
+
+
+namespace drycut::interp::testing {
+namespace {
+
+TEST(FrameFunctions, BuildTheSameComponentsAsTheInstructions) {
+  using Args = std::vector<parser::Argument>;
+  // CTRANS(X, 10, Y, 5) : CROT(Z, 90): (10, 0) -> (0, 10) -> (10, 15), as TRANS X10 Y5 / AROT RPL=90.
+  auto t = frame_function("CTRANS", Args{std::string("X"), 10.0, std::string("Y"), 5.0});
+  auto r = frame_function("CROT", Args{std::string("Z"), 90.0});
+  ASSERT_TRUE(t.ok() && r.ok());
+  EXPECT_TRUE(near(t.frame.then(r.frame).to_outer({10, 0, 0}), Vector3d(10, 15, 0)));
+  // CSCALE(X, 2, Y, 3): (1, 1, 1) -> (2, 3, 1); CMIRROR(Y): (1, 1, 1) -> (1, -1, 1).
+  auto s = frame_function("CSCALE", Args{std::string("X"), 2.0, std::string("Y"), 3.0});
+  ASSERT_TRUE(s.ok());
+  EXPECT_TRUE(near(s.frame.to_outer({1, 1, 1}), Vector3d(2, 3, 1)));
+  auto m = frame_function("CMIRROR", Args{std::string("Y")});
+  ASSERT_TRUE(m.ok());
+  EXPECT_TRUE(near(m.frame.to_outer({1, 1, 1}), Vector3d(1, -1, 1)));
+  EXPECT_FALSE(frame_function("CTRANS", Args{std::string("X")}).ok());
+  EXPECT_FALSE(frame_function("CTRANS", Args{5.0, 1.0}).ok());
+  EXPECT_FALSE(frame_function("CSCALE", Args{std::string("X"), 0.0}).ok());
+  EXPECT_TRUE(is_frame_function("CROT"));
+  EXPECT_FALSE(is_frame_function("ROT"));
 }
 
 }  // namespace
