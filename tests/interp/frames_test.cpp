@@ -311,3 +311,20 @@ TEST(FrameFunctions, BuildTheSameComponentsAsTheInstructions) {
 
 }  // namespace
 }  // namespace drycut::interp::testing
+
+namespace drycut::interp::testing {
+namespace {
+
+TEST(Frames, ArcInATiltedPlaneFollowsTheFrame) {
+  // ROT X90 maps workpiece (x, y, z) to machine (x, -z, y). The G17 circle G2 from (0, 0, 0) to
+  // (10, 0, 0) about (5, 0, 0) runs through workpiece (5, 5, 0) -> machine (5, 0, 5).
+  auto r = run_program("G0 X0 Y0 Z0\nROT X90\nG0 X0 Y0 Z0\nG2 X10 Y0 I5 F100\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  auto m = r->sink.motions();
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_TRUE(near(m[2].curve->at(m[2].curve->length() / 2).position, Vector3d(5, 0, 5)));
+  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(10, 0, 0)));
+}
+
+}  // namespace
+}  // namespace drycut::interp::testing
