@@ -255,11 +255,8 @@ TEST(Frames, SetSettableFrameTakesEffectOnTheNextSelection) {
 namespace drycut::interp::testing {
 namespace {
 
-TEST(Frames, MirroredContourIsCompensatedOnTheMirroredSide) {
-  // The square (0,0) (10,0) (10,10) (0,10) with G41 (inside, r = 2) under MIRROR X0 is the square
-  // x in [-10, 0] on the machine; the tool centre runs inside it: x = -8 on the second side,
-  // y = 8 on the third.
-  const std::string text = "T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG41 G1 X10 Y0 F100\nY10\nX0\nG40 X0 Y20\nM30\n";
+// Interpreter and tool radius compensation in a row (the tool centre path).
+std::vector<PathElement> tool_centre_path(const std::string& text) {
   const auto dir = std::filesystem::temp_directory_path() / ("drycut_frames_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "MAIN.MPF") << text;
@@ -274,7 +271,14 @@ TEST(Frames, MirroredContourIsCompensatedOnTheMirroredSide) {
   while (loader.next(block) && !interp.ended()) interp.execute(block);
   interp.finish();
   std::filesystem::remove_all(dir);
-  auto m = sink.motions();
+  return sink.motions();
+}
+
+TEST(Frames, MirroredContourIsCompensatedOnTheMirroredSide) {
+  // The square (0,0) (10,0) (10,10) (0,10) with G41 (inside, r = 2) under MIRROR X0 is the square
+  // x in [-10, 0] on the machine; the tool centre runs inside it: x = -8 on the second side,
+  // y = 8 on the third.
+  auto m = tool_centre_path("T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG41 G1 X10 Y0 F100\nY10\nX0\nG40 X0 Y20\nM30\n");
   ASSERT_GE(m.size(), 4u);
   EXPECT_TRUE(near(m[2].curve->start(), Vector3d(-8, 0, 0), 1e-6));  // NORM: the approach ends normal to the next side
   EXPECT_TRUE(near(m[2].curve->end(), Vector3d(-8, 8, 0), 1e-6));
@@ -314,6 +318,16 @@ TEST(FrameFunctions, BuildTheSameComponentsAsTheInstructions) {
 
 namespace drycut::interp::testing {
 namespace {
+
+TEST(Frames, RotationInTheG18PlaneKeepsTheCompensationSide) {
+  // G18 ROT RPL=90 maps workpiece (x, y, z) to machine (z, y, -x). The side Z10 -> Z20 at X0
+  // runs along machine +X from (10, 0, 0) to (20, 0, 0). G41 in G18 (normal +Y): left of +Z is
+  // Y x Z = +X in the workpiece, i.e. machine z = -2; seen on the machine: left of +X is Y x X = -Z.
+  auto m = tool_centre_path("T1 M6 D1\nG0 X0 Y0 Z0\nG18 ROT RPL=90\nG1 Z10 X0 F100\nG41 Z20\nZ30\nG40 Z40 X10\nM30\n");
+  ASSERT_GE(m.size(), 4u);
+  EXPECT_TRUE(near(m[3].curve->start(), Vector3d(20, 0, -2), 1e-6));
+  EXPECT_TRUE(near(m[3].curve->end(), Vector3d(30, 0, -2), 1e-6));
+}
 
 TEST(Frames, ArcInATiltedPlaneFollowsTheFrame) {
   // ROT X90 maps workpiece (x, y, z) to machine (x, -z, y). The G17 circle G2 from (0, 0, 0) to
