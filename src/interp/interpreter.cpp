@@ -53,6 +53,15 @@ geometry::SplineEnd to_spline_end(SplineCondition condition, const Vector3d& tan
   return end;
 }
 
+// The programmable frame instruction a command names (A...: additive), if it is one.
+std::optional<FrameInstruction> frame_instruction_kind(std::string_view name) {
+  if (name == "TRANS" || name == "ATRANS") return FrameInstruction::Trans;
+  if (name == "ROT" || name == "AROT") return FrameInstruction::Rot;
+  if (name == "SCALE" || name == "ASCALE") return FrameInstruction::Scale;
+  if (name == "MIRROR" || name == "AMIRROR") return FrameInstruction::Mirror;
+  return std::nullopt;
+}
+
 // Minimum spline end-point blocks per window of 10 (facts §1.2).
 int spline_quota(MotionMode mode, int cubic_spline_blocks) {
   switch (mode) {
@@ -76,14 +85,16 @@ struct Interpreter::BlockContext {
   }
   const parser::Block& block;
   bool exact_stop = false;      // G9
-  bool suppress_offsets = false;  // G53
+  bool suppress_offsets = false;  // G53, G153, SUPA: no frame for this block
   bool dwell = false;           // G4
   bool tool_change = false;     // M6
   std::optional<StopKind> stop;  // M0, M1, M2, M30
   bool preprocessing_stop = false;  // STOPRE
   bool motion_code = false;     // a group-1 code is written in this block
-  bool translation = false;     // TRANS/ATRANS: the axis words are the offset, not a target
-  bool additive_translation = false;
+  // TRANS/ROT/SCALE/MIRROR (A...: additive): the axis words are the frame's values, not a target.
+  std::optional<FrameInstruction> frame_instruction;
+  bool additive_frame = false;
+  std::optional<PoleReference> pole;  // G110/G111/G112: the axis or polar words define the pole
   bool compensation_changed = false;
   std::optional<double> block_feed;  // F in this block (not a G4 block)
 };
@@ -96,6 +107,10 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       options_(options),
       state_(reset_state(profile)),
       position_(profile.start_position) {
+  for (int i = 0; i < kSettableFrames; ++i) {
+    settable_frames_[static_cast<size_t>(i)] = profile_settable_frame(profile, i);
+    settable_defined_[static_cast<size_t>(i)] = profile_has_settable_frame(profile, i);
+  }
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;
 }
@@ -135,12 +150,16 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
     switch (code) {
       case 4: ctx.dwell = true; continue;
       case 9: ctx.exact_stop = true; continue;
-      case 53: ctx.suppress_offsets = true; continue;
+      case 53: case 153: ctx.suppress_offsets = true; continue;
+      case 110: ctx.pole = PoleReference::LastPosition; continue;
+      case 111: ctx.pole = PoleReference::WorkpieceZero; continue;
+      case 112: ctx.pole = PoleReference::LastPole; continue;
       case 17: case 18: case 19: {
         const PlaneSelect before = state_.plane;
         state_.apply_code("G" + std::to_string(code));
         if (state_.plane != before && state_.compensation != CompensationSide::None)
           raise(ctx, 10757, "", g.column);
+        if (state_.plane != before) state_.polar.plane_changed();
         continue;
       }
       case 41: case 42: {
@@ -151,21 +170,15 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         continue;
       }
       case 40: state_.compensation = CompensationSide::None; ctx.compensation_changed = true; continue;
-      case 500: case 54: case 55: case 56: case 57: {
-        const std::string name = "G" + std::to_string(code);
-        state_.work_offset = name;
-        auto it = profile_.work_offsets.find(name);
-        if (it == profile_.work_offsets.end()) {
-          state_.work_offset_mm = Vector3d::Zero();
-          if (code != 500) warn_once(ctx, name + " has no offset in the machine profile; zero used", g.column);
-        } else {
-          state_.work_offset_mm = it->second;
-        }
-        continue;
-      }
+      case 500: case 54: case 55: case 56: case 57: select_settable_frame(ctx, code, g.column); continue;
       case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
       case 644: state_.transition = TransitionMode::SmoothTolerance; continue;
-      default: break;
+      default:
+        if (settable_frame_index(code) >= 0) {
+          select_settable_frame(ctx, code, g.column);
+          continue;
+        }
+        break;
     }
     if (state_.apply_code("G" + std::to_string(code))) continue;
     warn_once(ctx, "G" + std::to_string(code), g.column);
@@ -178,9 +191,11 @@ void Interpreter::apply_commands(BlockContext& ctx) {
     if (n == "ASPLINE" || n == "BSPLINE" || n == "CSPLINE" || n == "CIP" || n == "CT") {
       ctx.motion_code = true;
       state_.apply_code(n);
-    } else if (n == "TRANS" || n == "ATRANS") {
-      ctx.translation = true;
-      ctx.additive_translation = n == "ATRANS";
+    } else if (auto kind = frame_instruction_kind(n)) {
+      ctx.frame_instruction = kind;
+      ctx.additive_frame = n[0] == 'A';
+    } else if (n == "SUPA") {
+      ctx.suppress_offsets = true;
     } else if (n == "STOPRE") {
       ctx.preprocessing_stop = true;
     } else if (n == "SPLINEPATH") {
@@ -242,8 +257,6 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "DISC") {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
-    } else if (n == "AP" || n == "RP") {
-      raise(ctx, kUnsupported, "polar coordinates " + n + "=", a.column);
     } else if (n == "A" || n == "B" || n == "C") {
       warn_once(ctx, "rotary axis " + n + " (not simulated)", a.column);
     }
@@ -291,22 +304,117 @@ void Interpreter::select_edge(const BlockContext& ctx, int d, uint32_t column) {
   state_.tool_radius_mm = edge->radius_mm;
 }
 
-Vector3d Interpreter::frame_offset(const BlockContext& ctx) const {
-  if (ctx.suppress_offsets) return Vector3d::Zero();
-  return state_.work_offset_mm + state_.translation_mm;
+const Frame& Interpreter::block_frame(const BlockContext& ctx) const {
+  return state_.frames.total(ctx.suppress_offsets);
 }
 
-Vector3d Interpreter::target_position(BlockContext& ctx) const {
+bool Interpreter::is_incremental(const AddressWord& a) const {
+  return a.mode == ValueMode::Incremental || (a.mode == ValueMode::Default && !state_.absolute);
+}
+
+PolarWords Interpreter::polar_words(const BlockContext& ctx) const {
+  PolarWords w;
+  if (const AddressWord* ap = ctx.block.find_address("AP")) {
+    w.angle_deg = ap->value;
+    w.angle_incremental = ap->mode == ValueMode::Incremental;
+  }
+  if (const AddressWord* rp = ctx.block.find_address("RP")) w.radius_mm = rp->value * (state_.inch ? kMmPerInch : 1.0);
+  return w;
+}
+
+void Interpreter::select_settable_frame(const BlockContext& ctx, int code, uint32_t column) {
+  const int index = settable_frame_index(code);
+  state_.work_offset = settable_frame_name(index);
+  state_.frames.set_settable(settable_frames_[static_cast<size_t>(index)]);
+  if (index != 0 && !settable_defined_[static_cast<size_t>(index)])
+    warn_once(ctx, state_.work_offset + " has no offset in the machine profile; zero used", column);
+}
+
+void Interpreter::set_settable_frame(int index, const Frame& frame) {
+  if (index < 0 || index >= kSettableFrames) return;
+  settable_frames_[static_cast<size_t>(index)] = frame;
+  settable_defined_[static_cast<size_t>(index)] = true;
+}
+
+void Interpreter::set_programmable_frame(const Frame& frame) { state_.frames.set_programmable(frame); }
+
+void Interpreter::apply_frame_instruction(const BlockContext& ctx) {
+  // TRANS X.. / ROT RPL=.. / SCALE X.. / MIRROR X0 ...: the words are the frame's values.
   const double unit = state_.inch ? kMmPerInch : 1.0;
-  const Vector3d frame = frame_offset(ctx);
-  Vector3d target = position_;
+  const FrameInstruction kind = *ctx.frame_instruction;
+  FrameInstructionWords words;
+  for (const AddressWord& a : ctx.block.addresses) {
+    if (const int i = axis_index(a.name); i >= 0) {
+      words.axes[static_cast<size_t>(i)] = kind == FrameInstruction::Trans ? a.value * unit : a.value;
+    } else if (a.name == "RPL") {
+      words.rpl = a.value;
+    }
+  }
+  const Frame component = instruction_frame(kind, words, state_.plane_normal_axis());
+  // A scale factor 0 (or a product beyond the double range) leaves no way back from the machine
+  // to the workpiece system.
+  if (!component.invertible() || !state_.frames.programmable().then(component).invertible())
+    raise(ctx, kUnsupported, "frame without an inverse (scale factor 0 or out of range)");
+  state_.frames.program(component, ctx.additive_frame);
+}
+
+void Interpreter::define_pole(const BlockContext& ctx) {
+  const double unit = state_.inch ? kMmPerInch : 1.0;
+  const PlaneIndices axes = state_.plane_indices();
+  PoleWords cartesian;
+  for (const AddressWord& a : ctx.block.addresses) {
+    const int i = axis_index(a.name);
+    if (i == axes.first) cartesian.first = a.value * unit;
+    if (i == axes.second) cartesian.second = a.value * unit;
+  }
+  const Vector3d here = block_frame(ctx).to_inner(position_);
+  state_.polar.define_pole(*ctx.pole, cartesian, polar_words(ctx), axes, here);
+}
+
+bool Interpreter::frame_mirrors_plane(const Frame& frame) const {
+  if (frame.is_pure_translation()) return false;
+  const PlaneIndices axes = state_.plane_indices();
+  const Vector3d n = frame.vector_to_outer(Vector3d::Unit(axes.first)).cross(frame.vector_to_outer(Vector3d::Unit(axes.second)));
+  return n[axes.normal] < 0;
+}
+
+void Interpreter::check_compensation_plane(const BlockContext& ctx) const {
+  const Frame& frame = block_frame(ctx);
+  if (state_.compensation == CompensationSide::None || frame.is_pure_translation()) return;
+  // Tool radius compensation works in the machine's working plane: a frame that tilts the plane
+  // (ROT about a plane axis) would need 3-D compensation, which is not modelled.
+  const PlaneIndices axes = state_.plane_indices();
+  const Vector3d n = frame.vector_to_outer(Vector3d::Unit(axes.first)).cross(frame.vector_to_outer(Vector3d::Unit(axes.second)));
+  if (std::abs(n[axes.normal]) < (1 - 1e-9) * n.norm())
+    raise(ctx, kUnsupported, "tool radius compensation in a plane the frame tilts out of G17/G18/G19");
+}
+
+Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
+  const double unit = state_.inch ? kMmPerInch : 1.0;
+  const Frame& frame = block_frame(ctx);
+  const PolarWords polar = polar_words(ctx);
+  Target t;
+  if (frame.is_pure_translation() && !polar.any()) {
+    // Per axis and exact: the position of an axis not written does not move.
+    t.machine = position_;
+    for (const AddressWord& a : ctx.block.addresses) {
+      const int i = axis_index(a.name);
+      if (i < 0) continue;
+      t.machine[i] = is_incremental(a) ? position_[i] + a.value * unit : a.value * unit + frame.offset()[i];
+    }
+    t.workpiece = frame.to_inner(t.machine);
+    return t;
+  }
+  // Through the workpiece system: axes not written keep their workpiece coordinate.
+  t.workpiece = frame.to_inner(position_);
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
     if (i < 0) continue;
-    const bool incremental = a.mode == ValueMode::Incremental || (a.mode == ValueMode::Default && !state_.absolute);
-    target[i] = incremental ? position_[i] + a.value * unit : a.value * unit + frame[i];
+    t.workpiece[i] = is_incremental(a) ? t.workpiece[i] + a.value * unit : a.value * unit;
   }
-  return target;
+  if (polar.any()) t.workpiece = state_.polar.target(polar, state_.plane_indices(), t.workpiece);
+  t.machine = frame.to_outer(t.workpiece);
+  return t;
 }
 
 double Interpreter::feed_mm_s(const BlockContext& ctx) const {
@@ -329,6 +437,9 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.dynamics.profile = state_.accel;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
   e.compensation.side = state_.compensation;
+  // A mirror in the plane swaps the sides: G41 on the programmed contour is right of the mirrored one.
+  if (e.compensation.side != CompensationSide::None && frame_mirrors_plane(block_frame(ctx)))
+    e.compensation.side = e.compensation.side == CompensationSide::Left ? CompensationSide::Right : CompensationSide::Left;
   e.compensation.radius_mm = state_.tool_radius_mm;
   e.compensation.intersection_corners = state_.intersection_corners;
   e.compensation.contour_approach = state_.contour_approach;
@@ -372,18 +483,18 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     emit_control(ctx, ElementKind::DynamicsChange, "dynamics");
   }
 
-  if (ctx.translation) {
-    // TRANS X.. Y.. Z..: the axis words set (ATRANS: add) the programmable translation.
-    const double unit = state_.inch ? kMmPerInch : 1.0;
-    if (!ctx.additive_translation) state_.translation_mm.setZero();
-    for (const AddressWord& a : ctx.block.addresses)
-      if (int i = axis_index(a.name); i >= 0) state_.translation_mm[i] += a.value * unit;
+  if (ctx.frame_instruction) {
+    apply_frame_instruction(ctx);
+    return;
+  }
+  if (ctx.pole) {
+    define_pole(ctx);
     return;
   }
 
   bool has_axis = false;
   for (const AddressWord& a : ctx.block.addresses)
-    if (axis_index(a.name) >= 0) has_axis = true;
+    if (axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP") has_axis = true;
   const bool arc_mode = state_.motion == MotionMode::ArcCw || state_.motion == MotionMode::ArcCcw;
   // A full circle needs no end point: G2 I10 is a motion block.
   const bool full_circle = arc_mode && !has_axis &&
@@ -393,8 +504,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
 
   if (has_axis || full_circle) {
-    const Vector3d target = target_position(ctx);
+    const Target programmed = target_position(ctx);
+    const Vector3d& target = programmed.machine;
     check_limits(ctx, target);
+    check_compensation_plane(ctx);
     const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
     if (run_ends && (state_.spline_mode() || state_.motion == MotionMode::ArcTangent)) {
       // A new spline type, or CT (which is tangent to the run's end itself): ETAN takes the chord.
@@ -406,7 +519,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
       add_spline_point(ctx, target);
     } else {
       const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
-      PathElement e = arc ? build_arc(ctx, target) : build_line(ctx, target);
+      PathElement e = arc ? build_arc(ctx, programmed) : build_line(ctx, target);
       if (spline_.active()) {
         // The run ends here; ETAN takes the direction this block starts in.
         Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
@@ -482,9 +595,16 @@ PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) c
   return e;
 }
 
-PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) const {
+PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) const {
   const double unit = state_.inch ? kMmPerInch : 1.0;
-  const Vector3d frame = frame_offset(ctx);
+  // The circle is built where the program describes it. With a pure translation that is the
+  // machine system shifted (exact, as before frames); otherwise the workpiece system, and the
+  // finished circle goes through the frame (a mirror turns G2 into G3 by itself).
+  const Frame& frame = block_frame(ctx);
+  const bool in_machine = frame.is_pure_translation();
+  const Vector3d shift = in_machine ? frame.offset() : Vector3d::Zero();
+  const Vector3d start = in_machine ? position_ : frame.to_inner(position_);
+  const Vector3d end = in_machine ? target.machine : target.workpiece;
   const geometry::Plane plane = to_geometry_plane(state_.plane);
   geometry::ArcTolerance tolerance{profile_.circle_error_const_mm, profile_.circle_error_factor};
   geometry::ArcResult result;
@@ -494,21 +614,21 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) co
 
   if (state_.motion == MotionMode::ArcThroughPoint) {
     // CIP: intermediate point I1/J1/K1 follows G90/G91 (and AC/IC) like an end point.
-    Vector3d mid = position_;
+    Vector3d mid = start;
     bool any = false;
     const char* names[3] = {"I1", "J1", "K1"};
     for (int i = 0; i < 3; ++i) {
       if (const AddressWord* a = ctx.block.find_address(names[i])) {
         any = true;
-        const bool inc = a->mode == ValueMode::Incremental || (a->mode == ValueMode::Default && !state_.absolute);
-        mid[i] = inc ? position_[i] + a->value * unit : a->value * unit + frame[i];
+        mid[i] = is_incremental(*a) ? start[i] + a->value * unit : a->value * unit + shift[i];
       }
     }
     if (!any) raise(ctx, 14040, "CIP needs an intermediate point I1/J1/K1");
-    result = geometry::arc_through_point(position_, mid, target);
+    result = geometry::arc_through_point(start, mid, end);
   } else if (state_.motion == MotionMode::ArcTangent) {
     if (!has_last_tangent_) raise(ctx, 14040, "CT needs a preceding motion to be tangent to");
-    result = geometry::arc_tangent(position_, last_tangent_, target, plane);
+    const Vector3d tangent = in_machine ? last_tangent_ : frame.vector_to_inner(last_tangent_).normalized();
+    result = geometry::arc_tangent(start, tangent, end, plane);
   } else {
     const bool cw = state_.motion == MotionMode::ArcCw;
     const AddressWord* cr = ctx.block.find_address("CR");
@@ -521,30 +641,43 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) co
       turns = static_cast<int>(turn->value);
     }
     bool has_center = false;
-    Vector3d center = position_;
+    Vector3d center = start;
     const char* names[3] = {"I", "J", "K"};
     for (int i = 0; i < 3; ++i) {
       if (const AddressWord* a = ctx.block.find_address(names[i])) {
         has_center = true;
         // I/J/K are relative to the start point unless written I=AC(..).
-        center[i] = a->mode == ValueMode::Absolute ? a->value * unit + frame[i] : position_[i] + a->value * unit;
+        center[i] = a->mode == ValueMode::Absolute ? a->value * unit + shift[i] : start[i] + a->value * unit;
       }
+    }
+    if (!has_center && polar_words(ctx).any()) {
+      // G2/G3 AP= RP=: a circle about the pole (in the plane; the normal coordinate is the start's).
+      const PlaneIndices axes = state_.plane_indices();
+      has_center = true;
+      center[axes.first] = state_.polar.pole()[axes.first] + shift[axes.first];
+      center[axes.second] = state_.polar.pole()[axes.second] + shift[axes.second];
     }
     if (cr) {
       if (cr->value == 0) raise(ctx, 14040, "CR=0", cr->column);
-      result = geometry::arc_from_radius(position_, target, cr->value * unit, cw, plane);
+      result = geometry::arc_from_radius(start, end, cr->value * unit, cw, plane);
     } else if (ar && has_center) {
-      result = geometry::arc_from_angle_and_center(position_, center, ar->value * std::numbers::pi / 180.0, cw, plane);
+      result = geometry::arc_from_angle_and_center(start, center, ar->value * std::numbers::pi / 180.0, cw, plane);
     } else if (ar) {
-      result = geometry::arc_from_angle_and_end(position_, target, ar->value * std::numbers::pi / 180.0, cw, plane);
+      result = geometry::arc_from_angle_and_end(start, end, ar->value * std::numbers::pi / 180.0, cw, plane);
     } else if (has_center) {
-      result = geometry::arc_from_center(position_, target, center, cw, plane, turns, tolerance);
+      result = geometry::arc_from_center(start, end, center, cw, plane, turns, tolerance);
     } else {
       raise(ctx, 14040, "G2/G3 needs a centre (I/J/K), a radius (CR=) or an angle (AR=)");
     }
   }
   if (result.alarm != 0) raise(ctx, result.alarm, result.detail);
-  e.curve = result.curve;
+  if (in_machine) {
+    e.curve = result.curve;
+  } else {
+    auto mapped = transform_curve(result.curve, frame);
+    if (!mapped) raise(ctx, kUnsupported, "circle under unequal scale factors in its plane (SCALE/ASCALE)");
+    e.curve = *mapped;
+  }
   return e;
 }
 

@@ -3,9 +3,12 @@
 // canonical stream of path elements (lines, arcs, spline spans, dwells, stops, tool changes).
 // It knows meaning, not time: feed and dynamics modes are recorded on the elements for the planner.
 //
-// Coordinates: elements are in machine coordinates (programmed position + work offset G54..G57 +
-// programmable translation TRANS/ATRANS); with the default profile's zero G54 they equal the
-// programmed coordinates.
+// Coordinates: elements are in machine coordinates. A programmed point (workpiece coordinates,
+// Cartesian or polar AP=/RP= about the pole) goes through one frame, the product of the frame
+// chain (settable frame G54..G599, programmable frame TRANS/ROT/SCALE/MIRROR; frame_chain.hpp),
+// in one place: target_position for end points, build_arc for circles (built in the workpiece
+// system, then mapped as a whole). With the default profile's zero G54 and no programmable frame
+// the elements equal the programmed coordinates.
 #include <array>
 #include <set>
 #include <string>
@@ -36,10 +39,24 @@ class Interpreter {
 
   const ModalState& state() const { return state_; }
   const Eigen::Vector3d& position() const { return position_; }
+  // $P_UIFR[index] = frame (index 0 = G500, 1..4 = G54..G57, 5..99 = G505..G599). Takes effect
+  // when the frame is next selected, as on the control; other indices are ignored.
+  void set_settable_frame(int index, const Frame& frame);
+  const Frame& settable_frame(int index) const { return settable_frames_.at(static_cast<size_t>(index)); }
+  // $P_PFRAME = frame: replaces the programmable frame at once.
+  void set_programmable_frame(const Frame& frame);
+  // The frame a block without G53 maps with (settable * programmable): e.g. the machine direction
+  // of the plane normal for tool length is frame().vector_to_outer(unit normal).
+  const Frame& frame() const { return state_.frames.total(false); }
   bool ended() const { return ended_; }
 
  private:
   struct BlockContext;
+  // An end point in the workpiece system (as programmed) and in the machine system.
+  struct Target {
+    Eigen::Vector3d workpiece;
+    Eigen::Vector3d machine;
+  };
 
   void apply_g_words(BlockContext& ctx);
   void apply_commands(BlockContext& ctx);
@@ -48,7 +65,7 @@ class Interpreter {
   void execute_motion(BlockContext& ctx);
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target) const;
-  PathElement build_arc(BlockContext& ctx, const Eigen::Vector3d& target) const;
+  PathElement build_arc(BlockContext& ctx, const Target& target) const;
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);
@@ -59,8 +76,16 @@ class Interpreter {
   const machine::Tool* find_tool(const std::string& id) const;
   // D<n>: the active tool's edge n (0 = no offset); its radius feeds tool radius compensation.
   void select_edge(const BlockContext& ctx, int d, uint32_t column);
-  Eigen::Vector3d frame_offset(const BlockContext& ctx) const;
-  Eigen::Vector3d target_position(BlockContext& ctx) const;
+  // Frames and polar coordinates.
+  const Frame& block_frame(const BlockContext& ctx) const;
+  bool is_incremental(const parser::AddressWord& a) const;
+  PolarWords polar_words(const BlockContext& ctx) const;
+  void select_settable_frame(const BlockContext& ctx, int code, uint32_t column);
+  void apply_frame_instruction(const BlockContext& ctx);
+  void define_pole(const BlockContext& ctx);
+  bool frame_mirrors_plane(const Frame& frame) const;
+  void check_compensation_plane(const BlockContext& ctx) const;
+  Target target_position(BlockContext& ctx);
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
                           uint32_t column = 0) const;
@@ -79,6 +104,8 @@ class Interpreter {
   DynamicsMode last_dynamics_;
   bool ended_ = false;
   std::set<std::string> warned_;
+  std::array<Frame, kSettableFrames> settable_frames_;  // $P_UIFR
+  std::array<bool, kSettableFrames> settable_defined_{};
 };
 
 }  // namespace drycut::interp

@@ -76,11 +76,13 @@ bool ModalState::apply_code(std::string_view name) {
 ModalState reset_state(const machine::MachineProfile& profile) {
   ModalState state;
   for (const auto& code : profile.reset_gcodes) {
-    if (code == "G500" || code == "G54" || code == "G55" || code == "G56" || code == "G57") {
-      state.work_offset = code;
-      auto it = profile.work_offsets.find(code);
-      state.work_offset_mm = it != profile.work_offsets.end() ? it->second : Eigen::Vector3d::Zero();
-      continue;
+    if (code.size() > 1 && code[0] == 'G' && code.find_first_not_of("0123456789", 1) == std::string::npos &&
+        code.size() <= 4) {
+      if (const int index = settable_frame_index(std::stoi(code.substr(1))); index >= 0) {
+        state.work_offset = code;
+        state.frames.set_settable(profile_settable_frame(profile, index));
+        continue;
+      }
     }
     if (!state.apply_code(code))
       throw machine::ProfileError("reset_gcodes: '" + code + "' is not a modal code drycut knows");

@@ -8,7 +8,9 @@
 
 #include <Eigen/Core>
 
+#include "interp/frame_chain.hpp"
 #include "interp/path_element.hpp"
+#include "interp/polar_coordinates.hpp"
 #include "machine/machine_profile.hpp"
 
 namespace drycut::interp {
@@ -29,9 +31,9 @@ struct ModalState {
   bool inch = false;                // G70/G700
   bool inch_feed = false;           // G700: the feed is converted too
   bool feed_per_rev = false;        // G95 (true) / G94
-  std::string work_offset = "G500"; // G500, G54..G57
-  Eigen::Vector3d work_offset_mm = Eigen::Vector3d::Zero();
-  Eigen::Vector3d translation_mm = Eigen::Vector3d::Zero();  // TRANS/ATRANS
+  std::string work_offset = "G500"; // G500, G54..G57, G505..G599
+  FrameChain frames;                // settable and programmable frame (src/interp/frame_chain.hpp)
+  PolarState polar;                 // pole, AP, RP
   double feed = 0.0;                // as programmed (mm/min, in/min, or per revolution)
   double spindle_rpm = 0.0;
   SpindleState spindle = SpindleState::Stopped;
@@ -55,6 +57,10 @@ struct ModalState {
   bool apply_code(std::string_view name);
 
   int plane_normal_axis() const { return plane == PlaneSelect::G17 ? 2 : plane == PlaneSelect::G18 ? 1 : 0; }
+  // G17: (X, Y, normal Z); G18: (Z, X, normal Y); G19: (Y, Z, normal X).
+  PlaneIndices plane_indices() const {
+    return plane == PlaneSelect::G17 ? PlaneIndices{0, 1, 2} : plane == PlaneSelect::G18 ? PlaneIndices{2, 0, 1} : PlaneIndices{1, 2, 0};
+  }
   bool spline_mode() const {
     return motion == MotionMode::ASpline || motion == MotionMode::BSpline || motion == MotionMode::CSpline;
   }

@@ -89,6 +89,23 @@ void read_path(const json& node, MachineProfile& p) {
   }
 }
 
+// Settable frames by name: G500 ($P_UIFR[0]), G54..G57 and G505..G599, each [x, y, z].
+void read_settable_frames(ProfileObjectReader& r, const char* key, std::map<std::string, Eigen::Vector3d>& out) {
+  const json* node = r.child(key);
+  if (!node) return;
+  ProfileObjectReader o(*node, r.key_path(key));
+  if (!node->is_object()) r.fail(key, "must be an object: frame name -> [x, y, z]");
+  static const std::regex kFrameName("G500|G5[4-7]|G5(0[5-9]|[1-9][0-9])");
+  for (auto it = node->begin(); it != node->end(); ++it) {
+    if (!std::regex_match(it.key(), kFrameName))
+      o.fail(it.key(), "not a settable work offset (G500, G54..G57, G505..G599)");
+    const json& v = it.value();
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      o.fail(it.key(), "must be an array of 3 numbers [x, y, z]");
+    out[it.key()] = Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  }
+}
+
 void read_program(const json& node, MachineProfile& p) {
   ProfileObjectReader r(node, "program");
   if (const json* codes = r.child("reset_gcodes")) {
@@ -100,18 +117,8 @@ void read_program(const json& node, MachineProfile& p) {
       p.reset_gcodes.push_back(c.get<std::string>());
     }
   }
-  if (const json* offsets = r.child("work_offsets_mm")) {
-    ProfileObjectReader o(*offsets, r.key_path("work_offsets_mm"));
-    // Settable frames: G54..G57 and G505..G599.
-    static const std::regex kOffsetName("G5[4-7]|G5(0[5-9]|[1-9][0-9])");
-    for (auto it = offsets->begin(); it != offsets->end(); ++it) {
-      if (!std::regex_match(it.key(), kOffsetName)) o.fail(it.key(), "not a settable work offset (G54..G57, G505..G599)");
-      const json& v = it.value();
-      if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
-        o.fail(it.key(), "must be an array of 3 numbers [x, y, z]");
-      p.work_offsets[it.key()] = Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
-    }
-  }
+  read_settable_frames(r, "work_offsets_mm", p.work_offsets);
+  read_settable_frames(r, "work_offset_rotations_deg", p.work_offset_rotations_deg);
   if (auto v = r.vector3("start_position", Dimension::Length)) p.start_position = *v;
   if (auto v = r.quantity("circle_error_const", Dimension::Length))
     p.circle_error_const_mm = require_positive(*v, r.key_path("circle_error_const"));
@@ -255,8 +262,11 @@ std::string profile_to_json(const MachineProfile& p) {
                   {"tool_change_time_s", p.tool_change_time_s}};
   json offsets = json::object();
   for (const auto& [name, v] : p.work_offsets) offsets[name] = {v.x(), v.y(), v.z()};
+  json rotations = json::object();
+  for (const auto& [name, v] : p.work_offset_rotations_deg) rotations[name] = {v.x(), v.y(), v.z()};
   root["program"] = {{"reset_gcodes", p.reset_gcodes},
                      {"work_offsets_mm", offsets},
+                     {"work_offset_rotations_deg", rotations},
                      {"start_position_mm", {p.start_position.x(), p.start_position.y(), p.start_position.z()}},
                      {"circle_error_const_mm", p.circle_error_const_mm},
                      {"circle_error_factor", p.circle_error_factor},

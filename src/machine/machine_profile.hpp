@@ -54,6 +54,8 @@ struct MachineProfile {
   // Interpreter data.
   std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...
   std::map<std::string, Eigen::Vector3d> work_offsets;  // "G54" -> offset (mm)
+  // "G54" -> RPY rotation of the settable frame, degrees about X, Y, Z (acts inside the offset).
+  std::map<std::string, Eigen::Vector3d> work_offset_rotations_deg;
   std::vector<Tool> tools;
   Eigen::Vector3d start_position = Eigen::Vector3d::Zero();  // in the work coordinate system of the first offset
   double circle_error_const_mm = 0.01;          // MD21000 CIRCLE_ERROR_CONST

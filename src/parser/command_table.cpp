@@ -32,15 +32,15 @@ constexpr std::array kCommands{
     CommandEntry{"TRAORI", N},  CommandEntry{"TRAFOOF", N}, CommandEntry{"TRACYL", N},
     CommandEntry{"TRANSMIT", N}, CommandEntry{"COMPON", N}, CommandEntry{"COMPCURV", N},
     CommandEntry{"COMPCAD", N}, CommandEntry{"COMPOF", N},  CommandEntry{"FFWON", N},
-    CommandEntry{"FFWOF", N},   CommandEntry{"ROT", N},     CommandEntry{"AROT", N},
-    CommandEntry{"SCALE", N},   CommandEntry{"ASCALE", N},  CommandEntry{"MIRROR", N},
-    CommandEntry{"AMIRROR", N}, CommandEntry{"UPATH", N},   CommandEntry{"SPATH", N},
+    CommandEntry{"FFWOF", N},   CommandEntry{"ROT", M},     CommandEntry{"AROT", M},
+    CommandEntry{"SCALE", M},   CommandEntry{"ASCALE", M},  CommandEntry{"MIRROR", M},
+    CommandEntry{"AMIRROR", M}, CommandEntry{"UPATH", N},   CommandEntry{"SPATH", N},
     CommandEntry{"CFC", N},     CommandEntry{"CFTCP", N},   CommandEntry{"CFIN", N},
     CommandEntry{"DRIVE", N},   CommandEntry{"DYNNORM", N}, CommandEntry{"DYNPOS", N},
     CommandEntry{"DYNROUGH", N}, CommandEntry{"DYNSEMIFIN", N}, CommandEntry{"DYNFINISH", N},
     CommandEntry{"ORIWKS", N},  CommandEntry{"ORIMKS", N},  CommandEntry{"ORIAXES", N},
     CommandEntry{"ORIVECT", N}, CommandEntry{"CUT2D", N},   CommandEntry{"CUT3DC", N},
-    CommandEntry{"SUPA", N},    CommandEntry{"DIAMON", N},  CommandEntry{"DIAMOF", N},
+    CommandEntry{"SUPA", M},    CommandEntry{"DIAMON", N},  CommandEntry{"DIAMOF", N},
     CommandEntry{"SPOS", N},    CommandEntry{"SETMS", N},   CommandEntry{"WAITM", N},
     CommandEntry{"FGROUP", N},  CommandEntry{"FNORM", N},   CommandEntry{"FLIN", N},
     CommandEntry{"FCUB", N},    CommandEntry{"TCARR", N},   CommandEntry{"TCOABS", N},
@@ -75,9 +75,9 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 40> kAddresses{
+constexpr std::array<std::string_view, 41> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
-    "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "TURN", "DISC", "OFFN", "S1",
+    "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS"};
 
 // Words of the language itself, for the misspelling check.

@@ -28,6 +28,7 @@ json small_profile() {
              "short_block_factor": 0.8, "g0_accel_factor": 1.2, "g0_jerk_factor": 1.3,
              "tool_change_time_s": 2.5},
     "program": {"reset_gcodes": ["G0", "G64"], "work_offsets_mm": {"G54": [1, 2, 3], "G505": [4, 5, 6]},
+                "work_offset_rotations_deg": {"G54": [0, 0, 30], "G500": [1, 2, 3]},
                 "start_position_mm": [7, 8, 9], "circle_error_const_mm": 0.02, "circle_error_factor": 0.002,
                 "cubic_spline_blocks": 5, "cubic_spline_global": true,
                 "cutcom_maxnum_check_blocks": 4, "cutcom_maxnum_dummy_blocks": 6},
@@ -90,6 +91,8 @@ TEST(LoadProfile, ConvertsUnitsToMmAndSeconds) {
   EXPECT_EQ(p.lookahead_blocks, 7);
   EXPECT_DOUBLE_EQ(p.tool_change_time_s, 2.5);
   EXPECT_EQ(p.work_offsets.at("G505"), Eigen::Vector3d(4, 5, 6));
+  EXPECT_EQ(p.work_offset_rotations_deg.at("G54"), Eigen::Vector3d(0, 0, 30));
+  EXPECT_EQ(p.work_offset_rotations_deg.at("G500"), Eigen::Vector3d(1, 2, 3));
   EXPECT_EQ(p.start_position, Eigen::Vector3d(7, 8, 9));
   EXPECT_TRUE(p.cubic_spline_global);
   ASSERT_NE(p.find_tool(3), nullptr);
@@ -120,6 +123,7 @@ TEST(LoadProfile, RoundTripKeepsEveryField) {
   EXPECT_EQ(a.tool_change_time_s, b.tool_change_time_s);
   EXPECT_EQ(a.reset_gcodes, b.reset_gcodes);
   EXPECT_EQ(a.work_offsets, b.work_offsets);
+  EXPECT_EQ(a.work_offset_rotations_deg, b.work_offset_rotations_deg);
   EXPECT_EQ(a.start_position, b.start_position);
   EXPECT_EQ(a.circle_error_const_mm, b.circle_error_const_mm);
   EXPECT_EQ(a.circle_error_factor, b.circle_error_factor);
@@ -190,6 +194,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"/program/reset_gcodes", "[\"G1\", 5]", "program.reset_gcodes: must be an array of non-empty strings"},
         BadCase{"/program/work_offsets_mm/G53", "[0,0,0]", "program.work_offsets_mm.G53: not a settable work offset"},
         BadCase{"/program/work_offsets_mm/G54", "[0,0]", "program.work_offsets_mm.G54: must be an array of 3 numbers"},
+        BadCase{"/program/work_offset_rotations_deg/G58", "[0,0,0]", "program.work_offset_rotations_deg.G58: not a settable work offset"},
         BadCase{"/program/start_position_mm", "[0,0,\"a\"]", "program.start_position_mm: must be an array of 3 numbers"},
         BadCase{"/program/cubic_spline_blocks", "0", "program.cubic_spline_blocks: must be in [1, 1000000]"},
         BadCase{"/program/cubic_spline_global", "1", "program.cubic_spline_global: must be true or false"},

@@ -27,6 +27,8 @@ class ArcCurve final : public Curve {
   double sweep() const { return sweep_; }
   double axial_travel() const { return axial_travel_; }
   Vec3 normal() const { return normal_; }
+  const Vec3& first_axis() const { return e1_; }   // e1: angle 0
+  const Vec3& second_axis() const { return e2_; }  // e2: angle pi/2
 
  private:
   Vec3 centre_;
