@@ -95,6 +95,7 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       diagnostics_(diagnostics),
       options_(options),
       state_(reset_state(profile)),
+      tools_(profile),
       position_(profile.start_position) {
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;
@@ -144,8 +145,8 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         continue;
       }
       case 41: case 42: {
-        if (!state_.active_tool || state_.edge == 0)
-          raise(ctx, 10750, state_.active_tool ? "D0 is active" : "no tool is active", g.column);
+        if (!tools_.has_tool() || tools_.edge() == 0)
+          raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", g.column);
         state_.compensation = code == 41 ? CompensationSide::Left : CompensationSide::Right;
         ctx.compensation_changed = true;
         continue;
@@ -211,6 +212,10 @@ void Interpreter::apply_commands(BlockContext& ctx) {
 }
 
 void Interpreter::apply_addresses(BlockContext& ctx) {
+  // MD22550 = 1: the M function of MD22560 changes the tool.
+  if (tools_.change_on_m_code())
+    for (const auto& m : ctx.block.m)
+      if (m.code == tools_.change_m_code()) ctx.tool_change = true;
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string& n = a.name;
     if (n == "F") {
@@ -226,16 +231,18 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       state_.spindle_rpm = a.value;
     } else if (n == "T") {
       // Checked before the conversion: a double outside long long's range is undefined there.
-      if (!(a.value >= 0 && a.value <= kMaxToolNumber))
-        raise(ctx, 12160, "T number must be 0..32000", a.column);
-      state_.prepared_tool = std::to_string(static_cast<long long>(a.value));
+      if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
+        raise(ctx, 12160, "T number must be a whole number 0..32000", a.column);
+      program_tool(ctx, std::to_string(static_cast<long long>(a.value)), a.column);
     } else if (n == "D") {
       // Range first: converting a double outside int's range is undefined behaviour.
       if (!(a.value >= 0 && a.value <= kMaxEdgeNumber) || a.value != std::floor(a.value))
         raise(ctx, 12160, "D must be a whole number >= 0", a.column);
-      // With M6 in the same block the edge belongs to the new tool: selected after the change.
-      if (ctx.block.has_m(6)) continue;
-      select_edge(ctx, static_cast<int>(a.value), a.column);
+      // In a block that changes the tool the edge belongs to the new tool: taken at the change.
+      if (ctx.tool_change) continue;
+      std::vector<ToolNotice> notices;
+      tools_.select_edge(static_cast<int>(a.value), notices);
+      report_tool_notices(ctx, notices, a.column);
     } else if (n == "SD") {
       if (a.value != 2 && a.value != 3) raise(ctx, 12160, "SD must be 2 or 3", a.column);
       state_.bspline_degree = static_cast<int>(a.value);
@@ -248,7 +255,13 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       warn_once(ctx, "rotary axis " + n + " (not simulated)", a.column);
     }
   }
-  if (ctx.block.tool_name) state_.prepared_tool = *ctx.block.tool_name;
+  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
+}
+
+void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_t column) {
+  std::vector<ToolNotice> notices;
+  if (tools_.program_tool(id, notices)) ctx.tool_change = true;  // MD22550 = 0: T changes
+  report_tool_notices(ctx, notices, column);
 }
 
 void Interpreter::apply_m_words(BlockContext& ctx) {
@@ -263,32 +276,39 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       case 3: state_.spindle = SpindleState::Clockwise; break;
       case 4: state_.spindle = SpindleState::CounterClockwise; break;
       case 5: state_.spindle = SpindleState::Stopped; break;
-      case 6: ctx.tool_change = true; break;
       default: break;  // M17 is the loader's; coolant and PLC functions take no path time
     }
+    // MD22560: the M function that changes the tool when MD22550 = 1.
+    // (MD22560, the change M function, is seen by apply_addresses: a D beside it is the new tool's.)
   }
 }
 
-const machine::Tool* Interpreter::find_tool(const std::string& id) const {
-  // T="name" selects by name; T<n> by number (kept as its decimal text).
-  if (const machine::Tool* tool = profile_.find_tool(id)) return tool;
-  char* end = nullptr;
-  const long number = std::strtol(id.c_str(), &end, 10);
-  return end && *end == '\0' && !id.empty() ? profile_.find_tool(static_cast<int>(number)) : nullptr;
+void Interpreter::report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices,
+                                      uint32_t column) {
+  for (const ToolNotice& n : notices) {
+    if (n.alarm) raise(ctx, n.number, n.detail, column);
+    if (warned_.insert(n.detail).second)
+      diagnostics_.warn(n.number, n.detail, {ctx.file_name(), ctx.block.line, column}, ctx.block.text);
+  }
 }
 
-void Interpreter::select_edge(const BlockContext& ctx, int d, uint32_t column) {
-  if (d != 0 && !state_.active_tool) raise(ctx, 12160, "D" + std::to_string(d) + " without an active tool", column);
-  state_.edge = d;
-  state_.tool_radius_mm = 0;
-  if (d == 0) return;
-  const machine::Tool* tool = find_tool(*state_.active_tool);
-  const machine::ToolEdge* edge = nullptr;
-  if (tool)
-    for (const auto& e : tool->edges)
-      if (e.d == d) edge = &e;
-  if (!edge) raise(ctx, 12160, "tool " + *state_.active_tool + " has no edge D" + std::to_string(d), column);
-  state_.tool_radius_mm = edge->radius_mm;
+void Interpreter::change_tool(BlockContext& ctx) {
+  std::optional<int> d;
+  uint32_t column = 0;
+  if (const AddressWord* word = ctx.block.find_address("D")) {
+    d = static_cast<int>(word->value);  // range checked with the addresses
+    column = word->column;
+  }
+  std::vector<ToolNotice> notices;
+  tools_.change_tool(d, notices);
+  report_tool_notices(ctx, notices, column);
+  emit_control(ctx, ElementKind::ToolChange, "M6 " + tools_.active_tool().value_or("0"));
+}
+
+Vector3d Interpreter::tool_length_vector() const {
+  Vector3d length = Vector3d::Zero();
+  length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
+  return length;
 }
 
 Vector3d Interpreter::frame_offset(const BlockContext& ctx) const {
@@ -305,6 +325,9 @@ Vector3d Interpreter::target_position(BlockContext& ctx) const {
     if (i < 0) continue;
     const bool incremental = a.mode == ValueMode::Incremental || (a.mode == ValueMode::Default && !state_.absolute);
     target[i] = incremental ? position_[i] + a.value * unit : a.value * unit + frame[i];
+    // Tool length: the carrier stands the length above the tip; an incremental move carries
+    // only the part of the length not yet applied.
+    target[i] += tool_length_vector()[i] - (incremental ? length_applied_[i] : 0.0);
   }
   return target;
 }
@@ -329,7 +352,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.dynamics.profile = state_.accel;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
   e.compensation.side = state_.compensation;
-  e.compensation.radius_mm = state_.tool_radius_mm;
+  e.compensation.radius_mm = tools_.offsets().radius_mm;
   e.compensation.intersection_corners = state_.intersection_corners;
   e.compensation.contour_approach = state_.contour_approach;
   e.compensation.collision_detection = state_.collision_detection;
@@ -394,6 +417,8 @@ void Interpreter::execute_motion(BlockContext& ctx) {
 
   if (has_axis || full_circle) {
     const Vector3d target = target_position(ctx);
+    for (const AddressWord& a : ctx.block.addresses)
+      if (int i = axis_index(a.name); i >= 0) length_applied_[i] = tool_length_vector()[i];
     check_limits(ctx, target);
     const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
     if (run_ends && (state_.spline_mode() || state_.motion == MotionMode::ArcTangent)) {
@@ -443,20 +468,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     e.label = "G4";
     emit(std::move(e));
   }
-  if (ctx.tool_change) {
-    if (!state_.prepared_tool) raise(ctx, 12160, "M6 without a tool selected by T");
-    const machine::Tool* tool = find_tool(*state_.prepared_tool);
-    if (!tool) raise(ctx, 12160, "tool '" + *state_.prepared_tool + "' is not in the machine profile's tool table");
-    state_.active_tool = state_.prepared_tool;
-    if (const AddressWord* d = ctx.block.find_address("D")) {
-      select_edge(ctx, static_cast<int>(d->value), d->column);
-    } else {
-      // MD20270 CUTTING_EDGE_DEFAULT = 1: after a change without D the first edge is active.
-      state_.edge = 1;
-      state_.tool_radius_mm = tool->edges.empty() ? 0.0 : tool->edges.front().radius_mm;
-    }
-    emit_control(ctx, ElementKind::ToolChange, "M6 " + *state_.active_tool);
-  }
+  if (ctx.tool_change) change_tool(ctx);
   if (ctx.preprocessing_stop) {
     PathElement e = element_template(ctx, ElementKind::Stop);
     e.stop = StopKind::Preprocessing;

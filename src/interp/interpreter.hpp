@@ -4,8 +4,9 @@
 // It knows meaning, not time: feed and dynamics modes are recorded on the elements for the planner.
 //
 // Coordinates: elements are in machine coordinates (programmed position + work offset G54..G57 +
-// programmable translation TRANS/ATRANS); with the default profile's zero G54 they equal the
-// programmed coordinates.
+// programmable translation TRANS/ATRANS + tool length along the plane normal), i.e. the tool
+// carrier reference point the axes move; with the default profile's zero G54 and length-0 tool
+// they equal the programmed coordinates (docs/controller-state.md "Tools and offsets").
 #include <array>
 #include <set>
 #include <string>
@@ -14,6 +15,7 @@
 #include "interp/path_element.hpp"
 #include "interp/spline_block_quota.hpp"
 #include "interp/spline_run.hpp"
+#include "interp/tool_state.hpp"
 #include "machine/alarm.hpp"
 #include "machine/machine_profile.hpp"
 #include "parser/block.hpp"
@@ -36,6 +38,10 @@ class Interpreter {
 
   const ModalState& state() const { return state_; }
   const Eigen::Vector3d& position() const { return position_; }
+  // Tool, edge and the run's copy of the tool table ($TC_DP writes go through
+  // tools().set_edge_parameter).
+  const ToolState& tools() const { return tools_; }
+  ToolState& tools() { return tools_; }
   bool ended() const { return ended_; }
 
  private:
@@ -55,10 +61,12 @@ class Interpreter {
   void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
   double feed_mm_s(const BlockContext& ctx) const;
-  // The profile's tool for a T selection: by name, or by number for T<n>.
-  const machine::Tool* find_tool(const std::string& id) const;
-  // D<n>: the active tool's edge n (0 = no offset); its radius feeds tool radius compensation.
-  void select_edge(const BlockContext& ctx, int d, uint32_t column);
+  // Raises the first alarm among the tool notices, reports the warnings.
+  void report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices, uint32_t column);
+  void program_tool(BlockContext& ctx, const std::string& id, uint32_t column);
+  void change_tool(BlockContext& ctx);
+  // Tool length compensation: the length vector of the active edge along the plane normal.
+  Eigen::Vector3d tool_length_vector() const;
   Eigen::Vector3d frame_offset(const BlockContext& ctx) const;
   Eigen::Vector3d target_position(BlockContext& ctx) const;
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
@@ -71,7 +79,12 @@ class Interpreter {
   Diagnostics& diagnostics_;
   InterpreterOptions options_;
   ModalState state_;
-  Eigen::Vector3d position_;
+  ToolState tools_;
+  Eigen::Vector3d position_;  // tool carrier reference point (tool tip + applied length)
+  // The tool length already contained in position_, per axis: it changes for an axis with the
+  // first motion that programs that axis after a new length (W1: TLC with the first traversing
+  // motion of the axis).
+  Eigen::Vector3d length_applied_ = Eigen::Vector3d::Zero();
   bool has_last_tangent_ = false;
   Eigen::Vector3d last_tangent_ = Eigen::Vector3d::UnitX();
   SplineRun spline_;

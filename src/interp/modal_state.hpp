@@ -1,6 +1,7 @@
 #pragma once
 // The interpreter's modal state: everything a block leaves behind for the next one (G groups,
-// units, frames, tool and edge, feed, spindle, dynamics modes, spline conditions, compensation).
+// units, frames, feed, spindle, dynamics modes, spline conditions, compensation).
+// Tool and edge live in ToolState (interp/tool_state.hpp).
 // Reset values come from the machine profile's reset_gcodes (the MD20150 analogue), not from code.
 #include <optional>
 #include <string>
@@ -35,10 +36,6 @@ struct ModalState {
   double feed = 0.0;                // as programmed (mm/min, in/min, or per revolution)
   double spindle_rpm = 0.0;
   SpindleState spindle = SpindleState::Stopped;
-  std::optional<std::string> prepared_tool;  // T selected, waiting for M6
-  std::optional<std::string> active_tool;    // after M6
-  int edge = 0;                     // D number (0 = no offset)
-  double tool_radius_mm = 0.0;      // radius of the active edge
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
   AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
   SplineCondition spline_begin = SplineCondition::Natural;

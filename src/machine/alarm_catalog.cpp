@@ -40,6 +40,8 @@ constexpr std::array kCatalog{
     AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
     AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
     AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
+    AlarmInfo{17180, S::Alarm, "Illegal D number", A::Memory},
+    AlarmInfo{17190, S::Alarm, "Illegal T number", A::Siemens},
     // drycut's own numbers: situations the control certainly rejects, but whose number no
     // public source gives.
     AlarmInfo{990001, S::Alarm, "Too few spline blocks in a window of 10 blocks", A::Drycut},
@@ -49,6 +51,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
     AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
     AlarmInfo{990010, S::Alarm, "Program contains no blocks", A::Drycut},
+    AlarmInfo{990012, S::Warning, "Tool or cutting edge not in the tool table", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };
 

@@ -89,6 +89,23 @@ void read_path(const json& node, MachineProfile& p) {
   }
 }
 
+// MD22550, MD22560, MD20270 and drycut's switch for an incomplete tool table.
+void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
+  if (auto v = r.integer("tool_change_mode")) {
+    if (*v != 0 && *v != 1) r.fail("tool_change_mode", "must be 0 (T changes) or 1 (M function changes)");
+    p.tool_change_mode = static_cast<int>(*v);
+  }
+  if (auto v = r.integer("tool_change_m_code")) {
+    if (*v < 0 || *v > 99999) r.fail("tool_change_m_code", "must be an M number 0..99999");
+    p.tool_change_m_code = static_cast<int>(*v);
+  }
+  if (auto v = r.integer("cutting_edge_default")) {
+    if (*v < -2 || *v > 32000) r.fail("cutting_edge_default", "must be -2, -1, 0 or an edge number 1..32000");
+    p.cutting_edge_default = static_cast<int>(*v);
+  }
+  if (auto v = r.boolean("tool_table_complete")) p.tool_table_complete = *v;
+}
+
 void read_program(const json& node, MachineProfile& p) {
   ProfileObjectReader r(node, "program");
   if (const json* codes = r.child("reset_gcodes")) {
@@ -129,6 +146,7 @@ void read_program(const json& node, MachineProfile& p) {
   if (auto v = r.boolean("cubic_spline_global")) p.cubic_spline_global = *v;
   positive_int("cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks);
   positive_int("cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks);
+  read_tool_change_data(r, p);
   r.reject_unknown_keys();
 }
 
@@ -200,6 +218,31 @@ MachineProfile load_profile_json(const std::string& json_text, const std::string
   }
 }
 
+std::vector<Tool> load_tools_json(const std::string& json_text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw ProfileError(origin + ": not valid JSON: " + e.what());
+  }
+  try {
+    MachineProfile p;
+    if (root.is_object()) {
+      // {"tools": [...]}: the profile's own key, so a profile's tool list can be cut out as is.
+      ProfileObjectReader r(root, "");
+      const json* tools = r.child("tools");
+      if (!tools) r.fail("tools", "missing");
+      r.reject_unknown_keys();
+      read_tools(*tools, p);
+    } else {
+      read_tools(root, p);
+    }
+    return p.tools;
+  } catch (const ProfileError& e) {
+    throw ProfileError(origin + ": " + e.what());
+  }
+}
+
 MachineProfile load_profile_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ProfileError(path + ": machine profile file cannot be opened");
@@ -248,7 +291,11 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"cubic_spline_blocks", p.cubic_spline_blocks},
                      {"cubic_spline_global", p.cubic_spline_global},
                      {"cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks},
-                     {"cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks}};
+                     {"cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks},
+                     {"tool_change_mode", p.tool_change_mode},
+                     {"tool_change_m_code", p.tool_change_m_code},
+                     {"cutting_edge_default", p.cutting_edge_default},
+                     {"tool_table_complete", p.tool_table_complete}};
   json tools = json::array();
   for (const auto& t : p.tools) {
     json edges = json::array();

@@ -26,7 +26,7 @@ struct AxisData {
 struct ToolEdge {
   int d = 1;               // D number
   double radius_mm = 0;    // cutter radius (tool radius compensation)
-  double length_mm = 0;    // length (informational; no length compensation modelled on Z yet)
+  double length_mm = 0;    // geometry length 1: tool length compensation along the plane normal
 };
 
 struct Tool {
@@ -55,6 +55,10 @@ struct MachineProfile {
   std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...
   std::map<std::string, Eigen::Vector3d> work_offsets;  // "G54" -> offset (mm)
   std::vector<Tool> tools;
+  int tool_change_mode = 1;                     // MD22550 TOOL_CHANGE_MODE: 1 = T prepares, M6 changes; 0 = T changes
+  int tool_change_m_code = 6;                   // MD22560 TOOL_CHANGE_M_CODE
+  int cutting_edge_default = 1;                 // MD20270 CUTTING_EDGE_DEFAULT (0, n, -1, -2)
+  bool tool_table_complete = false;             // a T/D missing from the table is an alarm (17190/17180), else a warning
   Eigen::Vector3d start_position = Eigen::Vector3d::Zero();  // in the work coordinate system of the first offset
   double circle_error_const_mm = 0.01;          // MD21000 CIRCLE_ERROR_CONST
   double circle_error_factor = 0.001;           // MD21010 CIRCLE_ERROR_FACTOR
@@ -85,6 +89,8 @@ class ProfileError : public std::runtime_error {
 // Parses and validates a profile (unknown key, wrong unit, negative limit -> ProfileError).
 MachineProfile load_profile_json(const std::string& json_text, const std::string& origin);
 MachineProfile load_profile_file(const std::string& path);
+// A tool table alone in the profile's form: an array of tools, or {"tools": [...]}.
+std::vector<Tool> load_tools_json(const std::string& json_text, const std::string& origin);
 // The embedded TAJMAC-ZPS MCV 1210 profile.
 const MachineProfile& default_profile();
 // The profile as JSON in the canonical units (load_profile_json reads it back unchanged).
