@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "interp/geometry/arc_solvers.hpp"
+#include "interp/feed_rate.hpp"
 #include "interp/geometry/line_curve.hpp"
 
 namespace drycut::interp {
@@ -85,6 +86,8 @@ struct Interpreter::BlockContext {
   bool translation = false;     // TRANS/ATRANS: the axis words are the offset, not a target
   bool additive_translation = false;
   bool compensation_changed = false;
+  double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)
+  uint32_t compensation_column = 0;  // the G41/G42 word
   std::optional<double> block_feed;  // F in this block (not a G4 block)
 };
 
@@ -145,10 +148,10 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         continue;
       }
       case 41: case 42: {
-        if (!tools_.has_tool() || tools_.edge() == 0)
-          raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", g.column);
+        // Checked in execute_motion: a D in the same block counts (the control applies D first).
         state_.compensation = code == 41 ? CompensationSide::Left : CompensationSide::Right;
         ctx.compensation_changed = true;
+        ctx.compensation_column = g.column;
         continue;
       }
       case 40: state_.compensation = CompensationSide::None; ctx.compensation_changed = true; continue;
@@ -165,6 +168,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         continue;
       }
       case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
+      case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
       case 644: state_.transition = TransitionMode::SmoothTolerance; continue;
       default: break;
     }
@@ -223,12 +227,24 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       // F has a resolution of 0.001: a smaller value is zero on the control (and would make
       // absurd times here).
       if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
+      if (state_.motion == MotionMode::ThreadIncreasing || state_.motion == MotionMode::ThreadDecreasing) {
+        ctx.lead_change_mm = a.value * geometry_unit();  // G34/G35: F is the lead change per revolution
+        continue;
+      }
       state_.feed = a.value;
+      state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
     } else if (n == "S") {
       if (ctx.dwell) continue;  // G4 S<rev>
       if (a.value < 0) raise(ctx, 12160, "S must not be negative", a.column);
       state_.spindle_rpm = a.value;
+    } else if (n == "LIMS") {
+      if (a.value < 0) raise(ctx, 12160, "LIMS must not be negative", a.column);
+      state_.spindle_speed_limit = a.value;
+    } else if (n == "SF") {
+      // Thread start angle: shifts where the thread starts on the circumference, not its time.
+    } else if (n == "OVR") {
+      warn_once(ctx, "OVR (drycut plans at 100 % override)", a.column);
     } else if (n == "T") {
       // Checked before the conversion: a double outside long long's range is undefined there.
       if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
@@ -332,16 +348,31 @@ Vector3d Interpreter::target_position(BlockContext& ctx) const {
   return target;
 }
 
-double Interpreter::feed_mm_s(const BlockContext& ctx) const {
-  if (state_.feed <= 0) raise(ctx, 10860, "no F programmed for " + std::string(motion_mode_name(state_.motion)));
-  if (state_.feed_per_rev) {
-    // S below its 0.001 resolution is a standing spindle (and would give absurd times).
-    if (state_.spindle_rpm < kMinFeed || state_.spindle == SpindleState::Stopped)
-      raise(ctx, 10860, "G95 feed per revolution needs a turning spindle (S and M3/M4)");
-    return state_.feed * state_.spindle_rpm / 60.0;  // mm/rev * rev/min -> mm/s
-  }
-  const double unit = state_.inch_feed ? kMmPerInch : 1.0;
-  return state_.feed * unit / 60.0;
+double Interpreter::geometry_unit() const { return state_.inch ? kMmPerInch : 1.0; }
+
+double Interpreter::feed_unit() const {
+  // G700/G710: F in the geometry's unit; G70/G71: F stays in the base system (MD10240).
+  const bool inch = state_.feed_in_geometry_unit ? state_.inch : profile_.base_unit_inch;
+  return inch ? kMmPerInch : 1.0;
+}
+
+double Interpreter::spindle_speed(const BlockContext& ctx) {
+  if (state_.spindle == SpindleState::Stopped) return 0.0;
+  if (!state_.constant_cutting_speed) return state_.spindle_rpm;
+  // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
+  // the diameter 2|X| (work coordinates) at the block start, limited by LIMS and MD35100.
+  warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
+  const double speed_mm_min = state_.spindle_rpm * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+  const double diameter = 2.0 * std::abs(position_.x() - frame_offset(ctx).x());
+  double rpm = diameter > 1e-9 ? speed_mm_min / (std::numbers::pi * diameter) : profile_.max_spindle_speed_rpm;
+  if (state_.spindle_speed_limit > 0) rpm = std::min(rpm, state_.spindle_speed_limit);
+  return std::min(rpm, profile_.max_spindle_speed_rpm);
+}
+
+double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Vector3d& chord) {
+  const FeedResult feed = path_feed(state_, spindle_speed(ctx), length_mm, chord, ctx.lead_change_mm);
+  if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
+  return feed.mm_s;
 }
 
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {
@@ -359,6 +390,23 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.compensation.disc = state_.disc;
   e.compensation.plane_normal_axis = state_.plane_normal_axis();
   return e;
+}
+
+void Interpreter::start_thread_block(BlockContext& ctx) {
+  // The lead: I (X), J (Y) or K (Z) of this block, else the last one (chained threads).
+  const char* names[3] = {"I", "J", "K"};
+  for (int i = 0; i < 3; ++i) {
+    if (const AddressWord* a = ctx.block.find_address(names[i])) {
+      state_.thread_lead_mm = std::abs(a->value) * geometry_unit();  // G331: the sign is the direction
+      state_.thread_lead_axis = i;
+    }
+  }
+  // A chain of thread blocks of one kind runs on without a new run-up; G331 -> G332 reverses.
+  if (thread_chain_ == state_.motion || profile_.spindle_ramp_time_s <= 0) return;
+  PathElement e = element_template(ctx, ElementKind::Dwell);
+  e.dwell_s = profile_.spindle_ramp_time_s;
+  e.label = "spindle ramp";
+  emit(std::move(e));
 }
 
 void Interpreter::emit(PathElement element) {
@@ -388,6 +436,9 @@ void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) 
 }
 
 void Interpreter::execute_motion(BlockContext& ctx) {
+  if (ctx.compensation_changed && state_.compensation != CompensationSide::None &&
+      (!tools_.has_tool() || tools_.edge() == 0))
+    raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", ctx.compensation_column);
   // Dynamics changes are told to the planner once, where they happen.
   if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile) {
     last_dynamics_.transition = state_.transition;
@@ -431,6 +482,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
       add_spline_point(ctx, target);
     } else {
       const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
+      if (state_.thread_mode()) start_thread_block(ctx);
       PathElement e = arc ? build_arc(ctx, target) : build_line(ctx, target);
       if (spline_.active()) {
         // The run ends here; ETAN takes the direction this block starts in.
@@ -444,6 +496,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   } else if (stops && spline_.active()) {
     end_spline_run(nullptr);
   }
+  if (has_axis || full_circle) thread_chain_ = state_.thread_mode() ? std::optional(state_.motion) : std::nullopt;
   if (!state_.spline_mode()) quota_.stop();
   if (quota_.active() && !quota_.record(has_axis))
     raise(ctx, 990001, std::to_string(quota_.in_window()) + " of 10, " + std::to_string(quota_.required()) + " required");
@@ -457,9 +510,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
         raise(ctx, 12160, "dwell time must be 0..999999.999 s", f->column);
       e.dwell_s = f->value;
     } else if (s) {
-      if (state_.spindle_rpm <= 0 || state_.spindle == SpindleState::Stopped)
-        raise(ctx, 12160, "G4 S needs a turning spindle", s->column);
-      e.dwell_s = s->value * 60.0 / state_.spindle_rpm;
+      const double rpm = spindle_speed(ctx);
+      if (rpm <= 0) raise(ctx, 12160, "G4 S needs a turning spindle", s->column);
+      e.dwell_s = s->value * 60.0 / rpm;
       if (!(e.dwell_s >= 0 && e.dwell_s <= kMaxDwellS))
         raise(ctx, 12160, "dwell time must be 0..999999.999 s", s->column);
     } else {
@@ -485,23 +538,22 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   }
 }
 
-PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) const {
+PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   PathElement e = element_template(ctx, ElementKind::Line);
   e.rapid = state_.motion == MotionMode::Rapid;
-  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx);
-  e.label = e.rapid ? "G0" : "G1";
+  e.label = e.rapid ? "G0" : std::string(motion_mode_name(state_.motion));
   e.curve = std::make_shared<geometry::LineCurve>(position_, target);
+  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.curve->length(), target - position_);
   return e;
 }
 
-PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) const {
+PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) {
   const double unit = state_.inch ? kMmPerInch : 1.0;
   const Vector3d frame = frame_offset(ctx);
   const geometry::Plane plane = to_geometry_plane(state_.plane);
   geometry::ArcTolerance tolerance{profile_.circle_error_const_mm, profile_.circle_error_factor};
   geometry::ArcResult result;
   PathElement e = element_template(ctx, ElementKind::Arc);
-  e.feed_mm_s = feed_mm_s(ctx);
   e.label = std::string(motion_mode_name(state_.motion));
 
   if (state_.motion == MotionMode::ArcThroughPoint) {
@@ -557,6 +609,7 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Vector3d& target) co
   }
   if (result.alarm != 0) raise(ctx, result.alarm, result.detail);
   e.curve = result.curve;
+  e.feed_mm_s = feed_mm_s(ctx, e.curve->length(), target - position_);
   return e;
 }
 
@@ -571,7 +624,9 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
     quota_.start(spline_quota(state_.motion, profile_.cubic_spline_blocks));
   }
   PathElement e = element_template(ctx, ElementKind::SplineSpan);
-  e.feed_mm_s = feed_mm_s(ctx);
+  // The span's length is known only when the run is solved: G93 takes the chord here.
+  if (state_.feed_mode == FeedMode::InverseTime) warn_once(ctx, "G93 with splines: the block time uses the chord", 0);
+  e.feed_mm_s = feed_mm_s(ctx, (target - position_).norm(), target - position_);
   e.label = std::string(motion_mode_name(state_.motion));
   double weight = 1.0, knot_span = 0.0;
   if (const AddressWord* pw = ctx.block.find_address("PW")) {

@@ -53,14 +53,22 @@ class Interpreter {
   void apply_m_words(BlockContext& ctx);
   void execute_motion(BlockContext& ctx);
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
-  PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target) const;
-  PathElement build_arc(BlockContext& ctx, const Eigen::Vector3d& target) const;
+  PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
+  PathElement build_arc(BlockContext& ctx, const Eigen::Vector3d& target);
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);
   void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
-  double feed_mm_s(const BlockContext& ctx) const;
+  // The path feed of a block of this length and chord (src/interp/feed_rate); alarms raised.
+  double feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord);
+  // The spindle speed the feed and G4 S use (G96 resolved; 0 when it stands).
+  double spindle_speed(const BlockContext& ctx);
+  double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
+  double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)
+  // A thread or tapping block: takes its lead I/J/K and, unless it continues a chain of the
+  // same kind, emits the profile's spindle_ramp_time as a dwell before it.
+  void start_thread_block(BlockContext& ctx);
   // Raises the first alarm among the tool notices, reports the warnings.
   void report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices, uint32_t column);
   void program_tool(BlockContext& ctx, const std::string& id, uint32_t column);
@@ -91,6 +99,7 @@ class Interpreter {
   SplineBlockQuota quota_;
   DynamicsMode last_dynamics_;
   bool ended_ = false;
+  std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
 };
 

@@ -15,7 +15,13 @@
 namespace drycut::interp {
 
 // G group 1 (with the spline types, which are members of it on the SINUMERIK).
-enum class MotionMode { Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline };
+enum class MotionMode {
+  Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline,
+  Thread /*G33*/, ThreadIncreasing /*G34*/, ThreadDecreasing /*G35*/, Tapping /*G331*/, TappingRetract /*G332*/
+};
+
+// G group 15: what F means.
+enum class FeedMode { PerMinute /*G94*/, PerRevolution /*G95*/, InverseTime /*G93*/ };
 
 enum class PlaneSelect { G17, G18, G19 };
 
@@ -27,13 +33,18 @@ struct ModalState {
   MotionMode motion = MotionMode::Linear;
   PlaneSelect plane = PlaneSelect::G17;
   bool absolute = true;             // G90 (true) / G91
-  bool inch = false;                // G70/G700
-  bool inch_feed = false;           // G700: the feed is converted too
-  bool feed_per_rev = false;        // G95 (true) / G94
+  bool inch = false;                // G70/G700: geometry in inch
+  bool feed_in_geometry_unit = false;  // G700/G710: F in the unit of the geometry, else in the base unit (MD10240)
+  FeedMode feed_mode = FeedMode::PerMinute;
+  bool constant_cutting_speed = false;  // G96 (S is m/min at the tool) / G97
+  double spindle_speed_limit = 0.0;     // LIMS= rev/min (0 = none)
+  double thread_lead_mm = 0.0;          // last thread lead I/J/K of G33..G35/G331/G332 (mm/rev)
+  int thread_lead_axis = 2;             // the axis of that lead (I: X, J: Y, K: Z)
   std::string work_offset = "G500"; // G500, G54..G57
   Eigen::Vector3d work_offset_mm = Eigen::Vector3d::Zero();
   Eigen::Vector3d translation_mm = Eigen::Vector3d::Zero();  // TRANS/ATRANS
-  double feed = 0.0;                // as programmed (mm/min, in/min, or per revolution)
+  double feed = 0.0;                // as programmed (per minute, per revolution, or 1/min under G93)
+  double feed_unit_mm = 1.0;        // mm per length unit of F when it was programmed (25.4: inch)
   double spindle_rpm = 0.0;
   SpindleState spindle = SpindleState::Stopped;
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
@@ -52,6 +63,11 @@ struct ModalState {
   bool apply_code(std::string_view name);
 
   int plane_normal_axis() const { return plane == PlaneSelect::G17 ? 2 : plane == PlaneSelect::G18 ? 1 : 0; }
+  bool thread_mode() const {
+    return motion == MotionMode::Thread || motion == MotionMode::ThreadIncreasing ||
+           motion == MotionMode::ThreadDecreasing || motion == MotionMode::Tapping ||
+           motion == MotionMode::TappingRetract;
+  }
   bool spline_mode() const {
     return motion == MotionMode::ASpline || motion == MotionMode::BSpline || motion == MotionMode::CSpline;
   }

@@ -82,6 +82,10 @@ void read_path(const json& node, MachineProfile& p) {
     p.g0_jerk_factor = require_positive(*v, r.key_path("g0_jerk_factor"));
   if (auto v = r.quantity("tool_change_time", Dimension::Time))
     p.tool_change_time_s = require_non_negative(*v, r.key_path("tool_change_time"));
+  if (auto v = r.quantity("spindle_ramp_time", Dimension::Time))
+    p.spindle_ramp_time_s = require_non_negative(*v, r.key_path("spindle_ramp_time"));
+  if (auto v = r.number("max_spindle_speed_rpm"))
+    p.max_spindle_speed_rpm = require_positive(*v, r.key_path("max_spindle_speed_rpm"));
   r.reject_unknown_keys();
   if (!jerk_given) {
     // No path jerk given: the smallest axis jerk is the safe stand-in.
@@ -89,7 +93,7 @@ void read_path(const json& node, MachineProfile& p) {
   }
 }
 
-// MD22550, MD22560, MD20270 and drycut's switch for an incomplete tool table.
+// MD22550, MD22560, MD20270, drycut's switch for an incomplete tool table, MD10240.
 void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
   if (auto v = r.integer("tool_change_mode")) {
     if (*v != 0 && *v != 1) r.fail("tool_change_mode", "must be 0 (T changes) or 1 (M function changes)");
@@ -104,6 +108,10 @@ void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
     p.cutting_edge_default = static_cast<int>(*v);
   }
   if (auto v = r.boolean("tool_table_complete")) p.tool_table_complete = *v;
+  if (auto v = r.string("base_unit")) {
+    if (*v != "mm" && *v != "inch") r.fail("base_unit", "must be \"mm\" or \"inch\"");
+    p.base_unit_inch = *v == "inch";
+  }
 }
 
 void read_program(const json& node, MachineProfile& p) {
@@ -279,7 +287,9 @@ std::string profile_to_json(const MachineProfile& p) {
                   {"short_block_factor", p.short_block_factor},
                   {"g0_accel_factor", p.g0_accel_factor},
                   {"g0_jerk_factor", p.g0_jerk_factor},
-                  {"tool_change_time_s", p.tool_change_time_s}};
+                  {"tool_change_time_s", p.tool_change_time_s},
+                  {"spindle_ramp_time_s", p.spindle_ramp_time_s},
+                  {"max_spindle_speed_rpm", p.max_spindle_speed_rpm}};
   json offsets = json::object();
   for (const auto& [name, v] : p.work_offsets) offsets[name] = {v.x(), v.y(), v.z()};
   root["program"] = {{"reset_gcodes", p.reset_gcodes},
@@ -295,7 +305,8 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"tool_change_mode", p.tool_change_mode},
                      {"tool_change_m_code", p.tool_change_m_code},
                      {"cutting_edge_default", p.cutting_edge_default},
-                     {"tool_table_complete", p.tool_table_complete}};
+                     {"tool_table_complete", p.tool_table_complete},
+                     {"base_unit", p.base_unit_inch ? "inch" : "mm"}};
   json tools = json::array();
   for (const auto& t : p.tools) {
     json edges = json::array();

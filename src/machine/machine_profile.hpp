@@ -50,11 +50,14 @@ struct MachineProfile {
   double g0_accel_factor = 1.0;                 // MD32434 G00_ACCEL_FACTOR
   double g0_jerk_factor = 1.0;                  // MD32435 G00_JERK_FACTOR
   double tool_change_time_s = 0;                // M6 duration (not derivable from the program)
+  double spindle_ramp_time_s = 0;               // spindle run-up/reversal before a thread or tapping block
+  double max_spindle_speed_rpm = 10000;         // MD35100 SPIND_VELO_LIMIT (G96 at the centre)
 
   // Interpreter data.
   std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...
   std::map<std::string, Eigen::Vector3d> work_offsets;  // "G54" -> offset (mm)
   std::vector<Tool> tools;
+  bool base_unit_inch = false;                  // MD10240 SCALING_SYSTEM_IS_METRIC = false: the base system is inch
   int tool_change_mode = 1;                     // MD22550 TOOL_CHANGE_MODE: 1 = T prepares, M6 changes; 0 = T changes
   int tool_change_m_code = 6;                   // MD22560 TOOL_CHANGE_M_CODE
   int cutting_edge_default = 1;                 // MD20270 CUTTING_EDGE_DEFAULT (0, n, -1, -2)

@@ -56,6 +56,13 @@ TEST(ToolState, CuttingEdgeDefaultAfterAChange) {
   EXPECT_DOUBLE_EQ(old->sink.motions()[1].compensation.radius_mm, 2.0);  // D1 of T1
 }
 
+TEST(ToolState, EdgeInTheG41BlockCountsForTheCompensationCheck) {
+  // D0 active, `G41 D1` in one block: D1 is selected before G41 starts (radius 2).
+  auto r = run_program("T1 M6 D0\nG41 D1 G1 X10 F100\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  EXPECT_DOUBLE_EQ(r->sink.motions()[0].compensation.radius_mm, 2.0);
+}
+
 TEST(ToolState, ZeroToolAndZeroEdgeAreEmpty) {
   // T00 M06 takes the tool out: no offsets, G41 is alarm 10750 (no tool).
   auto r = run_program("T1 M6\nT00 M06\nG41 G1 X10 F100\nM30\n");
