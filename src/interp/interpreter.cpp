@@ -125,6 +125,8 @@ void Interpreter::execute(const parser::Block& block) {
 }
 
 void Interpreter::apply_g_words(BlockContext& ctx) {
+  // G97 after G96 freezes the speed the spindle has now (an S in the block replaces it later).
+  const double frozen_speed = state_.constant_cutting_speed && ctx.block.has_g(97) ? spindle_speed(ctx) : -1.0;
   int group1 = -1;
   for (const auto& g : ctx.block.g) {
     const int code = g.code;
@@ -175,6 +177,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
     if (state_.apply_code("G" + std::to_string(code))) continue;
     warn_once(ctx, "G" + std::to_string(code), g.column);
   }
+  if (frozen_speed >= 0 && state_.spindle != SpindleState::Stopped) state_.spindle_rpm = frozen_speed;
 }
 
 void Interpreter::apply_commands(BlockContext& ctx) {

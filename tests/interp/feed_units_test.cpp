@@ -149,6 +149,10 @@ TEST(Feeds, ConstantCuttingSpeedFollowsTheDiameter) {
   auto capped = run_program("S1 M3\nG0 X20\nG96 S200 LIMS=1000\nG1 X30 F0.1\nM30\n");
   ASSERT_FALSE(capped->alarm) << capped->alarm->format();
   EXPECT_NEAR(capped->sink.motions()[1].feed_mm_s, 100.0 / 60, 1e-12);
+  // G97 at X25 (D 50 mm) freezes n = 200000/(50π) = 1273.2 rev/min for the next G95 block.
+  auto frozen = run_program("S1 M3\nG0 X25\nG96 S200\nG97\nG1 X40 F0.1\nM30\n");
+  ASSERT_FALSE(frozen->alarm) << frozen->alarm->format();
+  EXPECT_NEAR(frozen->sink.motions()[1].feed_mm_s, 0.1 * 200000 / (50 * std::numbers::pi) / 60, 1e-9);
 }
 
 TEST(Feeds, DwellInSpindleRevolutions) {
