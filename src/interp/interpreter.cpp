@@ -229,11 +229,13 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
       // F has a resolution of 0.001: a smaller value is zero on the control (and would make
       // absurd times here).
-      if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
       if (state_.motion == MotionMode::ThreadIncreasing || state_.motion == MotionMode::ThreadDecreasing) {
-        ctx.lead_change_mm = a.value * geometry_unit();  // G34/G35: F is the lead change per revolution
+        // G34/G35: F is the lead change per revolution (0: constant lead).
+        if (!(a.value >= 0)) raise(ctx, 12160, "the lead change F must be >= 0", a.column);
+        ctx.lead_change_mm = a.value * geometry_unit();
         continue;
       }
+      if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
       state_.feed = a.value;
       state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
@@ -321,7 +323,9 @@ void Interpreter::change_tool(BlockContext& ctx) {
   std::vector<ToolNotice> notices;
   tools_.change_tool(d, notices);
   report_tool_notices(ctx, notices, column);
-  emit_control(ctx, ElementKind::ToolChange, "M6 " + tools_.active_tool().value_or("0"));
+  const std::string tool = tools_.active_tool().value_or("0");
+  emit_control(ctx, ElementKind::ToolChange,
+               tools_.change_on_m_code() ? "M" + std::to_string(tools_.change_m_code()) + " " + tool : "T " + tool);
 }
 
 Vector3d Interpreter::tool_length_vector() const {
