@@ -219,10 +219,18 @@ void Interpreter::apply_commands(BlockContext& ctx) {
 }
 
 void Interpreter::apply_addresses(BlockContext& ctx) {
-  // MD22550 = 1: the M function of MD22560 changes the tool.
-  if (tools_.change_on_m_code())
-    for (const auto& m : ctx.block.m)
-      if (m.code == tools_.change_m_code()) ctx.tool_change = true;
+  // MD22550 = 1: the M function of MD22560 changes the tool; its address extension is a
+  // spindle number, and only the master spindle (1) changes tools here (W1 2.2.5).
+  if (tools_.change_on_m_code()) {
+    for (const auto& m : ctx.block.m) {
+      if (m.code != tools_.change_m_code()) continue;
+      if (m.extension > 1)
+        warn_once(ctx, "M" + std::to_string(m.extension) + "=" + std::to_string(m.code) +
+                           ": tool change on another spindle than the master spindle 1", m.column);
+      else
+        ctx.tool_change = true;
+    }
+  }
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string& n = a.name;
     if (n == "F") {

@@ -111,6 +111,16 @@ TEST(ToolState, ToolChangeModeZeroChangesOnT) {
   EXPECT_EQ(changes, 1u);
 }
 
+TEST(ToolState, M6WithAnotherSpindleNumberDoesNotChange) {
+  // M1=6 addresses the master spindle 1 (change); M2=6 spindle 2 (no change, warning).
+  auto r = run_program("T1\nM1=6\nT2\nM2=6\nM30\n", two_tools());
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  size_t changes = 0;
+  for (const auto& e : r->sink.elements) changes += e.kind == ElementKind::ToolChange;
+  EXPECT_EQ(changes, 1u);
+  EXPECT_EQ(count_warnings(*r, 990002), 1u);
+}
+
 TEST(ToolState, LengthActsAlongThePlaneNormalFromTheFirstMoveOfThatAxis) {
   // T1 D1: L 50. Start Z100 (carrier, no tool). X10 does not move Z; Z0 puts the tip at 0, the
   // carrier at 50. G91 Z-10 then moves 10 down: carrier 40.
