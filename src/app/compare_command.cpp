@@ -34,6 +34,7 @@ void register_compare(CLI::App& app) {
   cmd->add_option("PROGRAMS", o->programs, "Main programs (.MPF)")->required();
   cmd->add_option("--search-path", o->program.search_path, "Folder searched for subprograms (repeatable)");
   cmd->add_option("--machine", o->program.machine_file, "Machine profile JSON (default: the embedded profile)");
+  cmd->add_option("--tools", o->program.tools_file, "Tool table (.csv or .json) replacing the profile's tools");
   cmd->add_option("--max-steps", o->program.max_steps, "Blocks executed before a run is stopped as an endless loop")
       ->default_val(o->program.max_steps);
   cmd->add_flag("-q,--quiet", o->program.quiet, "No progress display");

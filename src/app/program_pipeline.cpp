@@ -7,6 +7,7 @@
 #include "interp/controller_state_view.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
+#include "machine/tool_table_file.hpp"
 #include "parser/program_loader.hpp"
 #include "report/progress_display.hpp"
 
@@ -21,6 +22,8 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
                  "*.DEF beside the main program are always read");
   cmd.add_option("--machine", options.machine_file,
                  "Machine profile JSON (default: the embedded TAJMAC-ZPS MCV 1210)");
+  cmd.add_option("--tools", options.tools_file,
+                 "Tool table (.csv or .json) replacing the profile's tools (docs/machine-profile.md)");
   cmd.add_option("--max-steps", options.max_steps,
                  "Blocks executed before the run is stopped as an endless loop")
       ->default_val(options.max_steps);
@@ -28,12 +31,20 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
 }
 
 machine::MachineProfile load_machine(const ProgramOptions& options) {
-  if (options.machine_file.empty()) return machine::default_profile();
+  machine::MachineProfile profile;
   try {
-    return machine::load_profile_file(options.machine_file);
+    profile = options.machine_file.empty() ? machine::default_profile() : machine::load_profile_file(options.machine_file);
   } catch (const machine::ProfileError& e) {
     throw UsageError(options.machine_file + ": " + e.what());
   }
+  if (!options.tools_file.empty()) {
+    try {
+      profile.tools = machine::load_tool_table_file(options.tools_file);
+    } catch (const machine::ProfileError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  return profile;
 }
 
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,

@@ -19,14 +19,16 @@ struct ProgramOptions {
   std::vector<std::string> search_path;
   std::vector<std::string> definition_dirs;  // GUD/MAC definition files (.DEF)
   std::string machine_file;        // empty = embedded default profile
+  std::string tools_file;          // empty = the profile's tool table; else it replaces it
   uint64_t max_steps = 100'000'000;
   bool quiet = false;              // no progress display
 };
 
-// Adds PROGRAM, --search-path, --definitions, --machine, --max-steps to a subcommand.
+// Adds PROGRAM, --search-path, --definitions, --machine, --tools, --max-steps to a subcommand.
 void add_program_options(CLI::App& cmd, ProgramOptions& options);
 
-// Loads the machine profile named by the options (UsageError on a bad file).
+// Loads the machine profile named by the options, with the --tools table in place of the
+// profile's (UsageError on a bad file).
 machine::MachineProfile load_machine(const ProgramOptions& options);
 
 struct PipelineOutcome {

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "interp/geometry/arc_solvers.hpp"
+#include "interp/feed_rate.hpp"
 #include "interp/geometry/line_curve.hpp"
 
 namespace drycut::interp {
@@ -96,6 +97,8 @@ struct Interpreter::BlockContext {
   bool additive_frame = false;
   std::optional<PoleReference> pole;  // G110/G111/G112: the axis or polar words define the pole
   bool compensation_changed = false;
+  double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)
+  uint32_t compensation_column = 0;  // the G41/G42 word
   std::optional<double> block_feed;  // F in this block (not a G4 block)
 };
 
@@ -106,6 +109,7 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       diagnostics_(diagnostics),
       options_(options),
       state_(reset_state(profile)),
+      tools_(profile),
       position_(profile.start_position) {
   for (int i = 0; i < kSettableFrames; ++i) {
     settable_frames_[static_cast<size_t>(i)] = profile_settable_frame(profile, i);
@@ -136,6 +140,8 @@ void Interpreter::execute(const parser::Block& block) {
 }
 
 void Interpreter::apply_g_words(BlockContext& ctx) {
+  // G97 after G96 freezes the speed the spindle has now (an S in the block replaces it later).
+  const double frozen_speed = state_.constant_cutting_speed && ctx.block.has_g(97) ? spindle_speed(ctx) : -1.0;
   int group1 = -1;
   for (const auto& g : ctx.block.g) {
     const int code = g.code;
@@ -163,15 +169,16 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         continue;
       }
       case 41: case 42: {
-        if (!state_.active_tool || state_.edge == 0)
-          raise(ctx, 10750, state_.active_tool ? "D0 is active" : "no tool is active", g.column);
+        // Checked in execute_motion: a D in the same block counts (the control applies D first).
         state_.compensation = code == 41 ? CompensationSide::Left : CompensationSide::Right;
         ctx.compensation_changed = true;
+        ctx.compensation_column = g.column;
         continue;
       }
       case 40: state_.compensation = CompensationSide::None; ctx.compensation_changed = true; continue;
       case 500: case 54: case 55: case 56: case 57: select_settable_frame(ctx, code, g.column); continue;
       case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
+      case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
       case 644: state_.transition = TransitionMode::SmoothTolerance; continue;
       default:
         if (settable_frame_index(code) >= 0) {
@@ -183,6 +190,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
     if (state_.apply_code("G" + std::to_string(code))) continue;
     warn_once(ctx, "G" + std::to_string(code), g.column);
   }
+  if (frozen_speed >= 0 && state_.spindle != SpindleState::Stopped) state_.spindle_rpm = frozen_speed;
 }
 
 void Interpreter::apply_commands(BlockContext& ctx) {
@@ -226,31 +234,59 @@ void Interpreter::apply_commands(BlockContext& ctx) {
 }
 
 void Interpreter::apply_addresses(BlockContext& ctx) {
+  // MD22550 = 1: the M function of MD22560 changes the tool; its address extension is a
+  // spindle number, and only the master spindle (1) changes tools here (W1 2.2.5).
+  if (tools_.change_on_m_code()) {
+    for (const auto& m : ctx.block.m) {
+      if (m.code != tools_.change_m_code()) continue;
+      if (m.extension > 1)
+        warn_once(ctx, "M" + std::to_string(m.extension) + "=" + std::to_string(m.code) +
+                           ": tool change on another spindle than the master spindle 1", m.column);
+      else
+        ctx.tool_change = true;
+    }
+  }
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string& n = a.name;
     if (n == "F") {
       if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
       // F has a resolution of 0.001: a smaller value is zero on the control (and would make
       // absurd times here).
+      if (state_.motion == MotionMode::ThreadIncreasing || state_.motion == MotionMode::ThreadDecreasing) {
+        // G34/G35: F is the lead change per revolution (0: constant lead).
+        if (!(a.value >= 0)) raise(ctx, 12160, "the lead change F must be >= 0", a.column);
+        ctx.lead_change_mm = a.value * geometry_unit();
+        continue;
+      }
       if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
       state_.feed = a.value;
+      state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
     } else if (n == "S") {
       if (ctx.dwell) continue;  // G4 S<rev>
       if (a.value < 0) raise(ctx, 12160, "S must not be negative", a.column);
       state_.spindle_rpm = a.value;
+    } else if (n == "LIMS") {
+      if (a.value < 0) raise(ctx, 12160, "LIMS must not be negative", a.column);
+      state_.spindle_speed_limit = a.value;
+    } else if (n == "SF") {
+      // Thread start angle: shifts where the thread starts on the circumference, not its time.
+    } else if (n == "OVR") {
+      warn_once(ctx, "OVR (drycut plans at 100 % override)", a.column);
     } else if (n == "T") {
       // Checked before the conversion: a double outside long long's range is undefined there.
-      if (!(a.value >= 0 && a.value <= kMaxToolNumber))
-        raise(ctx, 12160, "T number must be 0..32000", a.column);
-      state_.prepared_tool = std::to_string(static_cast<long long>(a.value));
+      if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
+        raise(ctx, 12160, "T number must be a whole number 0..32000", a.column);
+      program_tool(ctx, std::to_string(static_cast<long long>(a.value)), a.column);
     } else if (n == "D") {
       // Range first: converting a double outside int's range is undefined behaviour.
       if (!(a.value >= 0 && a.value <= kMaxEdgeNumber) || a.value != std::floor(a.value))
         raise(ctx, 12160, "D must be a whole number >= 0", a.column);
-      // With M6 in the same block the edge belongs to the new tool: selected after the change.
-      if (ctx.block.has_m(6)) continue;
-      select_edge(ctx, static_cast<int>(a.value), a.column);
+      // In a block that changes the tool the edge belongs to the new tool: taken at the change.
+      if (ctx.tool_change) continue;
+      std::vector<ToolNotice> notices;
+      tools_.select_edge(static_cast<int>(a.value), notices);
+      report_tool_notices(ctx, notices, a.column);
     } else if (n == "SD") {
       if (a.value != 2 && a.value != 3) raise(ctx, 12160, "SD must be 2 or 3", a.column);
       state_.bspline_degree = static_cast<int>(a.value);
@@ -261,7 +297,13 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       warn_once(ctx, "rotary axis " + n + " (not simulated)", a.column);
     }
   }
-  if (ctx.block.tool_name) state_.prepared_tool = *ctx.block.tool_name;
+  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
+}
+
+void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_t column) {
+  std::vector<ToolNotice> notices;
+  if (tools_.program_tool(id, notices)) ctx.tool_change = true;  // MD22550 = 0: T changes
+  report_tool_notices(ctx, notices, column);
 }
 
 void Interpreter::apply_m_words(BlockContext& ctx) {
@@ -276,32 +318,41 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       case 3: state_.spindle = SpindleState::Clockwise; break;
       case 4: state_.spindle = SpindleState::CounterClockwise; break;
       case 5: state_.spindle = SpindleState::Stopped; break;
-      case 6: ctx.tool_change = true; break;
       default: break;  // M17 is the loader's; coolant and PLC functions take no path time
     }
+    // MD22560: the M function that changes the tool when MD22550 = 1.
+    // (MD22560, the change M function, is seen by apply_addresses: a D beside it is the new tool's.)
   }
 }
 
-const machine::Tool* Interpreter::find_tool(const std::string& id) const {
-  // T="name" selects by name; T<n> by number (kept as its decimal text).
-  if (const machine::Tool* tool = profile_.find_tool(id)) return tool;
-  char* end = nullptr;
-  const long number = std::strtol(id.c_str(), &end, 10);
-  return end && *end == '\0' && !id.empty() ? profile_.find_tool(static_cast<int>(number)) : nullptr;
+void Interpreter::report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices,
+                                      uint32_t column) {
+  for (const ToolNotice& n : notices) {
+    if (n.alarm) raise(ctx, n.number, n.detail, column);
+    if (warned_.insert(n.detail).second)
+      diagnostics_.warn(n.number, n.detail, {ctx.file_name(), ctx.block.line, column}, ctx.block.text);
+  }
 }
 
-void Interpreter::select_edge(const BlockContext& ctx, int d, uint32_t column) {
-  if (d != 0 && !state_.active_tool) raise(ctx, 12160, "D" + std::to_string(d) + " without an active tool", column);
-  state_.edge = d;
-  state_.tool_radius_mm = 0;
-  if (d == 0) return;
-  const machine::Tool* tool = find_tool(*state_.active_tool);
-  const machine::ToolEdge* edge = nullptr;
-  if (tool)
-    for (const auto& e : tool->edges)
-      if (e.d == d) edge = &e;
-  if (!edge) raise(ctx, 12160, "tool " + *state_.active_tool + " has no edge D" + std::to_string(d), column);
-  state_.tool_radius_mm = edge->radius_mm;
+void Interpreter::change_tool(BlockContext& ctx) {
+  std::optional<int> d;
+  uint32_t column = 0;
+  if (const AddressWord* word = ctx.block.find_address("D")) {
+    d = static_cast<int>(word->value);  // range checked with the addresses
+    column = word->column;
+  }
+  std::vector<ToolNotice> notices;
+  tools_.change_tool(d, notices);
+  report_tool_notices(ctx, notices, column);
+  const std::string tool = tools_.active_tool().value_or("0");
+  emit_control(ctx, ElementKind::ToolChange,
+               tools_.change_on_m_code() ? "M" + std::to_string(tools_.change_m_code()) + " " + tool : "T " + tool);
+}
+
+Vector3d Interpreter::tool_length_vector() const {
+  Vector3d length = Vector3d::Zero();
+  length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
+  return length;
 }
 
 const Frame& Interpreter::block_frame(const BlockContext& ctx) const {
@@ -390,43 +441,68 @@ void Interpreter::check_compensation_plane(const BlockContext& ctx) const {
 }
 
 Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
-  const double unit = state_.inch ? kMmPerInch : 1.0;
+  const double unit = geometry_unit();
   const Frame& frame = block_frame(ctx);
   const PolarWords polar = polar_words(ctx);
+  const Vector3d length = tool_length_vector();
   Target t;
+  t.length_before = length_applied_;
   if (frame.is_pure_translation() && !polar.any()) {
-    // Per axis and exact: the position of an axis not written does not move.
+    // Per axis and exact: the position of an axis not written does not move. Tool length: the
+    // carrier stands the length above the tip from the first move of that axis on; an
+    // incremental move carries only the part of the length not yet applied.
     t.machine = position_;
+    t.length_after = length_applied_;
     for (const AddressWord& a : ctx.block.addresses) {
       const int i = axis_index(a.name);
       if (i < 0) continue;
-      t.machine[i] = is_incremental(a) ? position_[i] + a.value * unit : a.value * unit + frame.offset()[i];
+      const bool incremental = is_incremental(a);
+      t.machine[i] = incremental ? position_[i] + a.value * unit : a.value * unit + frame.offset()[i];
+      t.machine[i] += length[i] - (incremental ? length_applied_[i] : 0.0);
+      t.length_after[i] = length[i];
     }
-    t.workpiece = frame.to_inner(t.machine);
+    t.workpiece = frame.to_inner(t.machine - t.length_after);
     return t;
   }
-  // Through the workpiece system: axes not written keep their workpiece coordinate.
-  t.workpiece = frame.to_inner(position_);
+  // Through the workpiece system of the tool tip: axes not written keep their workpiece
+  // coordinate; the tool length is applied in full (a rotated frame moves every axis).
+  t.workpiece = frame.to_inner(position_ - length_applied_);
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
     if (i < 0) continue;
     t.workpiece[i] = is_incremental(a) ? t.workpiece[i] + a.value * unit : a.value * unit;
   }
   if (polar.any()) t.workpiece = state_.polar.target(polar, state_.plane_indices(), t.workpiece);
-  t.machine = frame.to_outer(t.workpiece);
+  t.length_after = length;
+  t.machine = frame.to_outer(t.workpiece) + length;
   return t;
 }
 
-double Interpreter::feed_mm_s(const BlockContext& ctx) const {
-  if (state_.feed <= 0) raise(ctx, 10860, "no F programmed for " + std::string(motion_mode_name(state_.motion)));
-  if (state_.feed_per_rev) {
-    // S below its 0.001 resolution is a standing spindle (and would give absurd times).
-    if (state_.spindle_rpm < kMinFeed || state_.spindle == SpindleState::Stopped)
-      raise(ctx, 10860, "G95 feed per revolution needs a turning spindle (S and M3/M4)");
-    return state_.feed * state_.spindle_rpm / 60.0;  // mm/rev * rev/min -> mm/s
-  }
-  const double unit = state_.inch_feed ? kMmPerInch : 1.0;
-  return state_.feed * unit / 60.0;
+double Interpreter::geometry_unit() const { return state_.inch ? kMmPerInch : 1.0; }
+
+double Interpreter::feed_unit() const {
+  // G700/G710: F in the geometry's unit; G70/G71: F stays in the base system (MD10240).
+  const bool inch = state_.feed_in_geometry_unit ? state_.inch : profile_.base_unit_inch;
+  return inch ? kMmPerInch : 1.0;
+}
+
+double Interpreter::spindle_speed(const BlockContext& ctx) {
+  if (state_.spindle == SpindleState::Stopped) return 0.0;
+  if (!state_.constant_cutting_speed) return state_.spindle_rpm;
+  // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
+  // the diameter 2|X| (work coordinates) at the block start, limited by LIMS and MD35100.
+  warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
+  const double speed_mm_min = state_.spindle_rpm * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+  const double diameter = 2.0 * std::abs(block_frame(ctx).to_inner(position_ - length_applied_).x());
+  double rpm = diameter > 1e-9 ? speed_mm_min / (std::numbers::pi * diameter) : profile_.max_spindle_speed_rpm;
+  if (state_.spindle_speed_limit > 0) rpm = std::min(rpm, state_.spindle_speed_limit);
+  return std::min(rpm, profile_.max_spindle_speed_rpm);
+}
+
+double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Vector3d& chord) {
+  const FeedResult feed = path_feed(state_, spindle_speed(ctx), length_mm, chord, ctx.lead_change_mm);
+  if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
+  return feed.mm_s;
 }
 
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {
@@ -440,13 +516,30 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   // A mirror in the plane swaps the sides: G41 on the programmed contour is right of the mirrored one.
   if (e.compensation.side != CompensationSide::None && frame_mirrors_plane(block_frame(ctx)))
     e.compensation.side = e.compensation.side == CompensationSide::Left ? CompensationSide::Right : CompensationSide::Left;
-  e.compensation.radius_mm = state_.tool_radius_mm;
+  e.compensation.radius_mm = tools_.offsets().radius_mm;
   e.compensation.intersection_corners = state_.intersection_corners;
   e.compensation.contour_approach = state_.contour_approach;
   e.compensation.collision_detection = state_.collision_detection;
   e.compensation.disc = state_.disc;
   e.compensation.plane_normal_axis = state_.plane_normal_axis();
   return e;
+}
+
+void Interpreter::start_thread_block(BlockContext& ctx) {
+  // The lead: I (X), J (Y) or K (Z) of this block, else the last one (chained threads).
+  const char* names[3] = {"I", "J", "K"};
+  for (int i = 0; i < 3; ++i) {
+    if (const AddressWord* a = ctx.block.find_address(names[i])) {
+      state_.thread_lead_mm = std::abs(a->value) * geometry_unit();  // G331: the sign is the direction
+      state_.thread_lead_axis = i;
+    }
+  }
+  // A chain of thread blocks of one kind runs on without a new run-up; G331 -> G332 reverses.
+  if (thread_chain_ == state_.motion || profile_.spindle_ramp_time_s <= 0) return;
+  PathElement e = element_template(ctx, ElementKind::Dwell);
+  e.dwell_s = profile_.spindle_ramp_time_s;
+  e.label = "spindle ramp";
+  emit(std::move(e));
 }
 
 void Interpreter::emit(PathElement element) {
@@ -476,6 +569,9 @@ void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) 
 }
 
 void Interpreter::execute_motion(BlockContext& ctx) {
+  if (ctx.compensation_changed && state_.compensation != CompensationSide::None &&
+      (!tools_.has_tool() || tools_.edge() == 0))
+    raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", ctx.compensation_column);
   // Dynamics changes are told to the planner once, where they happen.
   if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile) {
     last_dynamics_.transition = state_.transition;
@@ -506,6 +602,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (has_axis || full_circle) {
     const Target programmed = target_position(ctx);
     const Vector3d& target = programmed.machine;
+    length_applied_ = programmed.length_after;
     check_limits(ctx, target);
     check_compensation_plane(ctx);
     const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
@@ -519,6 +616,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
       add_spline_point(ctx, target);
     } else {
       const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
+      if (state_.thread_mode()) start_thread_block(ctx);
       PathElement e = arc ? build_arc(ctx, programmed) : build_line(ctx, target);
       if (spline_.active()) {
         // The run ends here; ETAN takes the direction this block starts in.
@@ -532,6 +630,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   } else if (stops && spline_.active()) {
     end_spline_run(nullptr);
   }
+  if (has_axis || full_circle) thread_chain_ = state_.thread_mode() ? std::optional(state_.motion) : std::nullopt;
   if (!state_.spline_mode()) quota_.stop();
   if (quota_.active() && !quota_.record(has_axis))
     raise(ctx, 990001, std::to_string(quota_.in_window()) + " of 10, " + std::to_string(quota_.required()) + " required");
@@ -545,9 +644,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
         raise(ctx, 12160, "dwell time must be 0..999999.999 s", f->column);
       e.dwell_s = f->value;
     } else if (s) {
-      if (state_.spindle_rpm <= 0 || state_.spindle == SpindleState::Stopped)
-        raise(ctx, 12160, "G4 S needs a turning spindle", s->column);
-      e.dwell_s = s->value * 60.0 / state_.spindle_rpm;
+      const double rpm = spindle_speed(ctx);
+      if (rpm <= 0) raise(ctx, 12160, "G4 S needs a turning spindle", s->column);
+      e.dwell_s = s->value * 60.0 / rpm;
       if (!(e.dwell_s >= 0 && e.dwell_s <= kMaxDwellS))
         raise(ctx, 12160, "dwell time must be 0..999999.999 s", s->column);
     } else {
@@ -556,20 +655,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     e.label = "G4";
     emit(std::move(e));
   }
-  if (ctx.tool_change) {
-    if (!state_.prepared_tool) raise(ctx, 12160, "M6 without a tool selected by T");
-    const machine::Tool* tool = find_tool(*state_.prepared_tool);
-    if (!tool) raise(ctx, 12160, "tool '" + *state_.prepared_tool + "' is not in the machine profile's tool table");
-    state_.active_tool = state_.prepared_tool;
-    if (const AddressWord* d = ctx.block.find_address("D")) {
-      select_edge(ctx, static_cast<int>(d->value), d->column);
-    } else {
-      // MD20270 CUTTING_EDGE_DEFAULT = 1: after a change without D the first edge is active.
-      state_.edge = 1;
-      state_.tool_radius_mm = tool->edges.empty() ? 0.0 : tool->edges.front().radius_mm;
-    }
-    emit_control(ctx, ElementKind::ToolChange, "M6 " + *state_.active_tool);
-  }
+  if (ctx.tool_change) change_tool(ctx);
   if (ctx.preprocessing_stop) {
     PathElement e = element_template(ctx, ElementKind::Stop);
     e.stop = StopKind::Preprocessing;
@@ -586,30 +672,30 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   }
 }
 
-PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) const {
+PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   PathElement e = element_template(ctx, ElementKind::Line);
   e.rapid = state_.motion == MotionMode::Rapid;
-  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx);
-  e.label = e.rapid ? "G0" : "G1";
+  e.label = e.rapid ? "G0" : std::string(motion_mode_name(state_.motion));
   e.curve = std::make_shared<geometry::LineCurve>(position_, target);
+  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.curve->length(), target - position_);
   return e;
 }
 
-PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) const {
+PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
   const double unit = state_.inch ? kMmPerInch : 1.0;
   // The circle is built where the program describes it. With a pure translation that is the
   // machine system shifted (exact, as before frames); otherwise the workpiece system, and the
   // finished circle goes through the frame (a mirror turns G2 into G3 by itself).
   const Frame& frame = block_frame(ctx);
   const bool in_machine = frame.is_pure_translation();
-  const Vector3d shift = in_machine ? frame.offset() : Vector3d::Zero();
-  const Vector3d start = in_machine ? position_ : frame.to_inner(position_);
+  // Absolute centres and CIP points are tip positions: in the machine system they get the length.
+  const Vector3d shift = in_machine ? Vector3d(frame.offset() + target.length_after) : Vector3d::Zero();
+  const Vector3d start = in_machine ? position_ : frame.to_inner(position_ - target.length_before);
   const Vector3d end = in_machine ? target.machine : target.workpiece;
   const geometry::Plane plane = to_geometry_plane(state_.plane);
   geometry::ArcTolerance tolerance{profile_.circle_error_const_mm, profile_.circle_error_factor};
   geometry::ArcResult result;
   PathElement e = element_template(ctx, ElementKind::Arc);
-  e.feed_mm_s = feed_mm_s(ctx);
   e.label = std::string(motion_mode_name(state_.motion));
 
   if (state_.motion == MotionMode::ArcThroughPoint) {
@@ -674,10 +760,12 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) cons
   if (in_machine) {
     e.curve = result.curve;
   } else {
-    auto mapped = transform_curve(result.curve, frame);
+    // Mapped through the frame, then lifted by the tool length to the carrier.
+    auto mapped = transform_curve(result.curve, Frame::translation(target.length_after).then(frame));
     if (!mapped) raise(ctx, kUnsupported, "circle under unequal scale factors in its plane (SCALE/ASCALE)");
     e.curve = *mapped;
   }
+  e.feed_mm_s = feed_mm_s(ctx, e.curve->length(), target.machine - position_);
   return e;
 }
 
@@ -692,7 +780,9 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
     quota_.start(spline_quota(state_.motion, profile_.cubic_spline_blocks));
   }
   PathElement e = element_template(ctx, ElementKind::SplineSpan);
-  e.feed_mm_s = feed_mm_s(ctx);
+  // The span's length is known only when the run is solved: G93 takes the chord here.
+  if (state_.feed_mode == FeedMode::InverseTime) warn_once(ctx, "G93 with splines: the block time uses the chord", 0);
+  e.feed_mm_s = feed_mm_s(ctx, (target - position_).norm(), target - position_);
   e.label = std::string(motion_mode_name(state_.motion));
   double weight = 1.0, knot_span = 0.0;
   if (const AddressWord* pw = ctx.block.find_address("PW")) {

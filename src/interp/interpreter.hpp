@@ -3,12 +3,13 @@
 // canonical stream of path elements (lines, arcs, spline spans, dwells, stops, tool changes).
 // It knows meaning, not time: feed and dynamics modes are recorded on the elements for the planner.
 //
-// Coordinates: elements are in machine coordinates. A programmed point (workpiece coordinates,
-// Cartesian or polar AP=/RP= about the pole) goes through one frame, the product of the frame
-// chain (settable frame G54..G599, programmable frame TRANS/ROT/SCALE/MIRROR; frame_chain.hpp),
-// in one place: target_position for end points, build_arc for circles (built in the workpiece
-// system, then mapped as a whole). With the default profile's zero G54 and no programmable frame
-// the elements equal the programmed coordinates.
+// Coordinates: elements are in machine coordinates of the tool carrier. A programmed point
+// (workpiece coordinates, Cartesian or polar AP=/RP= about the pole) goes through one frame, the
+// product of the frame chain (settable frame G54..G599, programmable frame TRANS/ROT/SCALE/MIRROR;
+// frame_chain.hpp), in one place: target_position for end points, build_arc for circles (built in
+// the workpiece system, then mapped as a whole); the tool length along the plane normal is added
+// to the tip (docs/controller-state.md "Tools and offsets"). With the default profile's zero G54,
+// no programmable frame and a length-0 tool the elements equal the programmed coordinates.
 #include <array>
 #include <set>
 #include <string>
@@ -17,6 +18,7 @@
 #include "interp/path_element.hpp"
 #include "interp/spline_block_quota.hpp"
 #include "interp/spline_run.hpp"
+#include "interp/tool_state.hpp"
 #include "machine/alarm.hpp"
 #include "machine/machine_profile.hpp"
 #include "parser/block.hpp"
@@ -48,14 +50,22 @@ class Interpreter {
   // The frame a block without G53 maps with (settable * programmable): e.g. the machine direction
   // of the plane normal for tool length is frame().vector_to_outer(unit normal).
   const Frame& frame() const { return state_.frames.total(false); }
+  // Tool, edge and the run's copy of the tool table ($TC_DP writes go through
+  // tools().set_edge_parameter).
+  const ToolState& tools() const { return tools_; }
+  ToolState& tools() { return tools_; }
   bool ended() const { return ended_; }
 
  private:
   struct BlockContext;
   // An end point in the workpiece system (as programmed) and in the machine system.
+  // A programmed end point: in the workpiece system of the tool tip, and the machine position of
+  // the tool carrier (the tip + the tool length applied after the block).
   struct Target {
     Eigen::Vector3d workpiece;
     Eigen::Vector3d machine;
+    Eigen::Vector3d length_before = Eigen::Vector3d::Zero();  // tool length applied at the start
+    Eigen::Vector3d length_after = Eigen::Vector3d::Zero();
   };
 
   void apply_g_words(BlockContext& ctx);
@@ -64,18 +74,28 @@ class Interpreter {
   void apply_m_words(BlockContext& ctx);
   void execute_motion(BlockContext& ctx);
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
-  PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target) const;
-  PathElement build_arc(BlockContext& ctx, const Target& target) const;
+  PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
+  PathElement build_arc(BlockContext& ctx, const Target& target);
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);
   void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
-  double feed_mm_s(const BlockContext& ctx) const;
-  // The profile's tool for a T selection: by name, or by number for T<n>.
-  const machine::Tool* find_tool(const std::string& id) const;
-  // D<n>: the active tool's edge n (0 = no offset); its radius feeds tool radius compensation.
-  void select_edge(const BlockContext& ctx, int d, uint32_t column);
+  // The path feed of a block of this length and chord (src/interp/feed_rate); alarms raised.
+  double feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord);
+  // The spindle speed the feed and G4 S use (G96 resolved; 0 when it stands).
+  double spindle_speed(const BlockContext& ctx);
+  double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
+  double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)
+  // A thread or tapping block: takes its lead I/J/K and, unless it continues a chain of the
+  // same kind, emits the profile's spindle_ramp_time as a dwell before it.
+  void start_thread_block(BlockContext& ctx);
+  // Raises the first alarm among the tool notices, reports the warnings.
+  void report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices, uint32_t column);
+  void program_tool(BlockContext& ctx, const std::string& id, uint32_t column);
+  void change_tool(BlockContext& ctx);
+  // Tool length compensation: the length vector of the active edge along the plane normal.
+  Eigen::Vector3d tool_length_vector() const;
   // Frames and polar coordinates.
   const Frame& block_frame(const BlockContext& ctx) const;
   bool is_incremental(const parser::AddressWord& a) const;
@@ -96,13 +116,19 @@ class Interpreter {
   Diagnostics& diagnostics_;
   InterpreterOptions options_;
   ModalState state_;
-  Eigen::Vector3d position_;
+  ToolState tools_;
+  Eigen::Vector3d position_;  // tool carrier reference point (tool tip + applied length)
+  // The tool length already contained in position_, per axis: it changes for an axis with the
+  // first motion that programs that axis after a new length (W1: TLC with the first traversing
+  // motion of the axis).
+  Eigen::Vector3d length_applied_ = Eigen::Vector3d::Zero();
   bool has_last_tangent_ = false;
   Eigen::Vector3d last_tangent_ = Eigen::Vector3d::UnitX();
   SplineRun spline_;
   SplineBlockQuota quota_;
   DynamicsMode last_dynamics_;
   bool ended_ = false;
+  std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
   std::array<Frame, kSettableFrames> settable_frames_;  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};

@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 41> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 49> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -23,12 +23,21 @@ constexpr std::array<std::pair<std::string_view, Setter>, 41> kCodes{{
     {"G19", [](ModalState& s) { s.plane = PlaneSelect::G19; }},
     {"G90", [](ModalState& s) { s.absolute = true; }},
     {"G91", [](ModalState& s) { s.absolute = false; }},
-    {"G70", [](ModalState& s) { s.inch = true; s.inch_feed = false; }},
-    {"G71", [](ModalState& s) { s.inch = false; s.inch_feed = false; }},
-    {"G700", [](ModalState& s) { s.inch = true; s.inch_feed = true; }},
-    {"G710", [](ModalState& s) { s.inch = false; s.inch_feed = false; }},
-    {"G94", [](ModalState& s) { s.feed_per_rev = false; }},
-    {"G95", [](ModalState& s) { s.feed_per_rev = true; }},
+    {"G70", [](ModalState& s) { s.inch = true; s.feed_in_geometry_unit = false; }},
+    {"G71", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = false; }},
+    {"G700", [](ModalState& s) { s.inch = true; s.feed_in_geometry_unit = true; }},
+    {"G710", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = true; }},
+    {"G93", [](ModalState& s) { s.feed_mode = FeedMode::InverseTime; }},
+    {"G94", [](ModalState& s) { s.feed_mode = FeedMode::PerMinute; }},
+    {"G95", [](ModalState& s) { s.feed_mode = FeedMode::PerRevolution; }},
+    // G96 switches feed per revolution on with constant cutting speed; G97 keeps G95.
+    {"G96", [](ModalState& s) { s.constant_cutting_speed = true; s.feed_mode = FeedMode::PerRevolution; }},
+    {"G97", [](ModalState& s) { s.constant_cutting_speed = false; }},
+    {"G33", [](ModalState& s) { s.motion = MotionMode::Thread; }},
+    {"G34", [](ModalState& s) { s.motion = MotionMode::ThreadIncreasing; }},
+    {"G35", [](ModalState& s) { s.motion = MotionMode::ThreadDecreasing; }},
+    {"G331", [](ModalState& s) { s.motion = MotionMode::Tapping; }},
+    {"G332", [](ModalState& s) { s.motion = MotionMode::TappingRetract; }},
     {"G60", [](ModalState& s) { s.transition = TransitionMode::ExactStop; }},
     {"G64", [](ModalState& s) { s.transition = TransitionMode::Continuous; }},
     {"G641", [](ModalState& s) { s.transition = TransitionMode::SmoothDistance; }},
@@ -101,6 +110,11 @@ std::string_view motion_mode_name(MotionMode mode) {
     case MotionMode::ASpline: return "ASPLINE";
     case MotionMode::BSpline: return "BSPLINE";
     case MotionMode::CSpline: return "CSPLINE";
+    case MotionMode::Thread: return "G33";
+    case MotionMode::ThreadIncreasing: return "G34";
+    case MotionMode::ThreadDecreasing: return "G35";
+    case MotionMode::Tapping: return "G331";
+    case MotionMode::TappingRetract: return "G332";
   }
   return "?";
 }

@@ -1,6 +1,7 @@
 #pragma once
 // The interpreter's modal state: everything a block leaves behind for the next one (G groups,
-// units, frames, tool and edge, feed, spindle, dynamics modes, spline conditions, compensation).
+// units, frames, feed, spindle, dynamics modes, spline conditions, compensation).
+// Tool and edge live in ToolState (interp/tool_state.hpp).
 // Reset values come from the machine profile's reset_gcodes (the MD20150 analogue), not from code.
 #include <optional>
 #include <string>
@@ -16,7 +17,13 @@
 namespace drycut::interp {
 
 // G group 1 (with the spline types, which are members of it on the SINUMERIK).
-enum class MotionMode { Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline };
+enum class MotionMode {
+  Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline,
+  Thread /*G33*/, ThreadIncreasing /*G34*/, ThreadDecreasing /*G35*/, Tapping /*G331*/, TappingRetract /*G332*/
+};
+
+// G group 15: what F means.
+enum class FeedMode { PerMinute /*G94*/, PerRevolution /*G95*/, InverseTime /*G93*/ };
 
 enum class PlaneSelect { G17, G18, G19 };
 
@@ -28,19 +35,20 @@ struct ModalState {
   MotionMode motion = MotionMode::Linear;
   PlaneSelect plane = PlaneSelect::G17;
   bool absolute = true;             // G90 (true) / G91
-  bool inch = false;                // G70/G700
-  bool inch_feed = false;           // G700: the feed is converted too
-  bool feed_per_rev = false;        // G95 (true) / G94
+  bool inch = false;                // G70/G700: geometry in inch
+  bool feed_in_geometry_unit = false;  // G700/G710: F in the unit of the geometry, else in the base unit (MD10240)
+  FeedMode feed_mode = FeedMode::PerMinute;
+  bool constant_cutting_speed = false;  // G96 (S is m/min at the tool) / G97
+  double spindle_speed_limit = 0.0;     // LIMS= rev/min (0 = none)
+  double thread_lead_mm = 0.0;          // last thread lead I/J/K of G33..G35/G331/G332 (mm/rev)
+  int thread_lead_axis = 2;             // the axis of that lead (I: X, J: Y, K: Z)
   std::string work_offset = "G500"; // G500, G54..G57, G505..G599
   FrameChain frames;                // settable and programmable frame (src/interp/frame_chain.hpp)
   PolarState polar;                 // pole, AP, RP
-  double feed = 0.0;                // as programmed (mm/min, in/min, or per revolution)
+  double feed = 0.0;                // as programmed (per minute, per revolution, or 1/min under G93)
+  double feed_unit_mm = 1.0;        // mm per length unit of F when it was programmed (25.4: inch)
   double spindle_rpm = 0.0;
   SpindleState spindle = SpindleState::Stopped;
-  std::optional<std::string> prepared_tool;  // T selected, waiting for M6
-  std::optional<std::string> active_tool;    // after M6
-  int edge = 0;                     // D number (0 = no offset)
-  double tool_radius_mm = 0.0;      // radius of the active edge
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
   AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
   SplineCondition spline_begin = SplineCondition::Natural;
@@ -60,6 +68,11 @@ struct ModalState {
   // G17: (X, Y, normal Z); G18: (Z, X, normal Y); G19: (Y, Z, normal X).
   PlaneIndices plane_indices() const {
     return plane == PlaneSelect::G17 ? PlaneIndices{0, 1, 2} : plane == PlaneSelect::G18 ? PlaneIndices{2, 0, 1} : PlaneIndices{1, 2, 0};
+  }
+  bool thread_mode() const {
+    return motion == MotionMode::Thread || motion == MotionMode::ThreadIncreasing ||
+           motion == MotionMode::ThreadDecreasing || motion == MotionMode::Tapping ||
+           motion == MotionMode::TappingRetract;
   }
   bool spline_mode() const {
     return motion == MotionMode::ASpline || motion == MotionMode::BSpline || motion == MotionMode::CSpline;

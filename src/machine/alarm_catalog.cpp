@@ -43,6 +43,8 @@ constexpr std::array kCatalog{
     AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
     AlarmInfo{17020, S::Alarm, "Illegal array index 1", A::Memory},
     AlarmInfo{17030, S::Alarm, "Illegal array index 2", A::Memory},
+    AlarmInfo{17180, S::Alarm, "Illegal D number", A::Memory},
+    AlarmInfo{17190, S::Alarm, "Illegal T number", A::Siemens},
     // drycut's own numbers: situations the control certainly rejects, but whose number no
     // public source gives.
     AlarmInfo{990001, S::Alarm, "Too few spline blocks in a window of 10 blocks", A::Drycut},
@@ -53,6 +55,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
     AlarmInfo{990007, S::Warning, "Value not known to drycut; the documented default is used", A::Drycut},
     AlarmInfo{990010, S::Alarm, "Program contains no blocks", A::Drycut},
+    AlarmInfo{990012, S::Warning, "Tool or cutting edge not in the tool table", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };
 

@@ -82,6 +82,10 @@ void read_path(const json& node, MachineProfile& p) {
     p.g0_jerk_factor = require_positive(*v, r.key_path("g0_jerk_factor"));
   if (auto v = r.quantity("tool_change_time", Dimension::Time))
     p.tool_change_time_s = require_non_negative(*v, r.key_path("tool_change_time"));
+  if (auto v = r.quantity("spindle_ramp_time", Dimension::Time))
+    p.spindle_ramp_time_s = require_non_negative(*v, r.key_path("spindle_ramp_time"));
+  if (auto v = r.number("max_spindle_speed_rpm"))
+    p.max_spindle_speed_rpm = require_positive(*v, r.key_path("max_spindle_speed_rpm"));
   r.reject_unknown_keys();
   if (!jerk_given) {
     // No path jerk given: the smallest axis jerk is the safe stand-in.
@@ -103,6 +107,27 @@ void read_settable_frames(ProfileObjectReader& r, const char* key, std::map<std:
     if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
       o.fail(it.key(), "must be an array of 3 numbers [x, y, z]");
     out[it.key()] = Eigen::Vector3d(v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  }
+}
+
+// MD22550, MD22560, MD20270, drycut's switch for an incomplete tool table, MD10240.
+void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
+  if (auto v = r.integer("tool_change_mode")) {
+    if (*v != 0 && *v != 1) r.fail("tool_change_mode", "must be 0 (T changes) or 1 (M function changes)");
+    p.tool_change_mode = static_cast<int>(*v);
+  }
+  if (auto v = r.integer("tool_change_m_code")) {
+    if (*v < 0 || *v > 99999) r.fail("tool_change_m_code", "must be an M number 0..99999");
+    p.tool_change_m_code = static_cast<int>(*v);
+  }
+  if (auto v = r.integer("cutting_edge_default")) {
+    if (*v < -2 || *v > 32000) r.fail("cutting_edge_default", "must be -2, -1, 0 or an edge number 1..32000");
+    p.cutting_edge_default = static_cast<int>(*v);
+  }
+  if (auto v = r.boolean("tool_table_complete")) p.tool_table_complete = *v;
+  if (auto v = r.string("base_unit")) {
+    if (*v != "mm" && *v != "inch") r.fail("base_unit", "must be \"mm\" or \"inch\"");
+    p.base_unit_inch = *v == "inch";
   }
 }
 
@@ -136,6 +161,7 @@ void read_program(const json& node, MachineProfile& p) {
   if (auto v = r.boolean("cubic_spline_global")) p.cubic_spline_global = *v;
   positive_int("cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks);
   positive_int("cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks);
+  read_tool_change_data(r, p);
   r.reject_unknown_keys();
 }
 
@@ -223,6 +249,31 @@ MachineProfile load_profile_json(const std::string& json_text, const std::string
   }
 }
 
+std::vector<Tool> load_tools_json(const std::string& json_text, const std::string& origin) {
+  json root;
+  try {
+    root = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw ProfileError(origin + ": not valid JSON: " + e.what());
+  }
+  try {
+    MachineProfile p;
+    if (root.is_object()) {
+      // {"tools": [...]}: the profile's own key, so a profile's tool list can be cut out as is.
+      ProfileObjectReader r(root, "");
+      const json* tools = r.child("tools");
+      if (!tools) r.fail("tools", "missing");
+      r.reject_unknown_keys();
+      read_tools(*tools, p);
+    } else {
+      read_tools(root, p);
+    }
+    return p.tools;
+  } catch (const ProfileError& e) {
+    throw ProfileError(origin + ": " + e.what());
+  }
+}
+
 MachineProfile load_profile_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ProfileError(path + ": machine profile file cannot be opened");
@@ -259,7 +310,9 @@ std::string profile_to_json(const MachineProfile& p) {
                   {"short_block_factor", p.short_block_factor},
                   {"g0_accel_factor", p.g0_accel_factor},
                   {"g0_jerk_factor", p.g0_jerk_factor},
-                  {"tool_change_time_s", p.tool_change_time_s}};
+                  {"tool_change_time_s", p.tool_change_time_s},
+                  {"spindle_ramp_time_s", p.spindle_ramp_time_s},
+                  {"max_spindle_speed_rpm", p.max_spindle_speed_rpm}};
   json offsets = json::object();
   for (const auto& [name, v] : p.work_offsets) offsets[name] = {v.x(), v.y(), v.z()};
   json rotations = json::object();
@@ -274,7 +327,12 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"cubic_spline_blocks", p.cubic_spline_blocks},
                      {"cubic_spline_global", p.cubic_spline_global},
                      {"cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks},
-                     {"cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks}};
+                     {"cutcom_maxnum_dummy_blocks", p.cutcom_maxnum_dummy_blocks},
+                     {"tool_change_mode", p.tool_change_mode},
+                     {"tool_change_m_code", p.tool_change_m_code},
+                     {"cutting_edge_default", p.cutting_edge_default},
+                     {"tool_table_complete", p.tool_table_complete},
+                     {"base_unit", p.base_unit_inch ? "inch" : "mm"}};
   json tools = json::array();
   for (const auto& t : p.tools) {
     json edges = json::array();

@@ -26,7 +26,7 @@ struct AxisData {
 struct ToolEdge {
   int d = 1;               // D number
   double radius_mm = 0;    // cutter radius (tool radius compensation)
-  double length_mm = 0;    // length (informational; no length compensation modelled on Z yet)
+  double length_mm = 0;    // geometry length 1: tool length compensation along the plane normal
 };
 
 struct Tool {
@@ -50,6 +50,8 @@ struct MachineProfile {
   double g0_accel_factor = 1.0;                 // MD32434 G00_ACCEL_FACTOR
   double g0_jerk_factor = 1.0;                  // MD32435 G00_JERK_FACTOR
   double tool_change_time_s = 0;                // M6 duration (not derivable from the program)
+  double spindle_ramp_time_s = 0;               // spindle run-up/reversal before a thread or tapping block
+  double max_spindle_speed_rpm = 10000;         // MD35100 SPIND_VELO_LIMIT (G96 at the centre)
 
   // Interpreter data.
   std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...
@@ -57,6 +59,11 @@ struct MachineProfile {
   // "G54" -> RPY rotation of the settable frame, degrees about X, Y, Z (acts inside the offset).
   std::map<std::string, Eigen::Vector3d> work_offset_rotations_deg;
   std::vector<Tool> tools;
+  bool base_unit_inch = false;                  // MD10240 SCALING_SYSTEM_IS_METRIC = false: the base system is inch
+  int tool_change_mode = 1;                     // MD22550 TOOL_CHANGE_MODE: 1 = T prepares, M6 changes; 0 = T changes
+  int tool_change_m_code = 6;                   // MD22560 TOOL_CHANGE_M_CODE
+  int cutting_edge_default = 1;                 // MD20270 CUTTING_EDGE_DEFAULT (0, n, -1, -2)
+  bool tool_table_complete = false;             // a T/D missing from the table is an alarm (17190/17180), else a warning
   Eigen::Vector3d start_position = Eigen::Vector3d::Zero();  // in the work coordinate system of the first offset
   double circle_error_const_mm = 0.01;          // MD21000 CIRCLE_ERROR_CONST
   double circle_error_factor = 0.001;           // MD21010 CIRCLE_ERROR_FACTOR
@@ -92,6 +99,8 @@ class ProfileError : public std::runtime_error {
 // Parses and validates a profile (unknown key, wrong unit, negative limit -> ProfileError).
 MachineProfile load_profile_json(const std::string& json_text, const std::string& origin);
 MachineProfile load_profile_file(const std::string& path);
+// A tool table alone in the profile's form: an array of tools, or {"tools": [...]}.
+std::vector<Tool> load_tools_json(const std::string& json_text, const std::string& origin);
 // The embedded TAJMAC-ZPS MCV 1210 profile.
 const MachineProfile& default_profile();
 // The profile as JSON in the canonical units (load_profile_json reads it back unchanged).

@@ -62,7 +62,7 @@ constexpr std::array kCommands{
     CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", N},
     CommandEntry{"TRAILON", N}, CommandEntry{"TRAILOF", N}, CommandEntry{"COUPON", N},
     CommandEntry{"COUPOF", N},  CommandEntry{"SPCON", N},   CommandEntry{"SPCOF", N},
-    CommandEntry{"FA", N},      CommandEntry{"OVR", N},     CommandEntry{"DYNPREC", N},
+    CommandEntry{"FA", N},      CommandEntry{"DYNPREC", N},
     // Valid, and modelled by doing nothing: they change display, single-block or buffer
     // behaviour, nothing a dry run measures.
     CommandEntry{"SBLOF", E},   CommandEntry{"SBLON", E},   CommandEntry{"DISPLOF", E},
@@ -75,10 +75,10 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 41> kAddresses{
+constexpr std::array<std::string_view, 44> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
-    "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS"};
+    "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{
@@ -143,11 +143,12 @@ Support g_code_support(int64_t g) {
     case 90: case 91: case 94: case 95: case 110: case 111: case 112: case 153: case 450: case 451:
     case 500: case 601: case 602: case 603: case 641: case 642: case 643: case 644: case 645:
     case 700: case 710:
+    case 33: case 34: case 35: case 63: case 93: case 96: case 97: case 331: case 332:  // threads, feed types
       return M;
-    case 5: case 7: case 8: case 25: case 26: case 33: case 34: case 35: case 58: case 59:
-    case 63: case 74: case 75: case 93: case 96: case 97: case 140: case 141:
-    case 142: case 143: case 147: case 148: case 247: case 248: case 290: case 291: case 331:
-    case 332: case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 621:
+    case 5: case 7: case 8: case 25: case 26: case 58: case 59:
+    case 74: case 75: case 140: case 141:
+    case 142: case 143: case 147: case 148: case 247: case 248: case 290: case 291:
+    case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 621:
     case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
     case 817: case 818: case 819: case 820: case 821: case 822: case 823: case 824: case 825:
     case 826: case 827: case 828: case 829: case 931: case 942: case 952: case 961: case 962:

@@ -93,11 +93,18 @@ TEST(Interpreter, StopsToolChangeAndProgramEnd) {
   EXPECT_EQ(r->sink.elements.back().stop, StopKind::ProgramEnd);
 }
 
-TEST(Interpreter, UnknownToolIsAnAlarm) {
-  auto r = run_program("T=\"fr_4\"\nM6\nM30\n");  // tool names are case-sensitive
-  ASSERT_TRUE(r->alarm);
-  EXPECT_EQ(r->alarm->number, 12160);
-  EXPECT_EQ(r->alarm->where.line, 2u);
+TEST(Interpreter, UnknownToolNameWarnsOrIsAnAlarmWithACompleteTable) {
+  // Tool names are case-sensitive: "fr_4" is not FR_4.
+  auto r = run_program("T=\"fr_4\"\nM6\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  ASSERT_EQ(r->diagnostics.items().size(), 1u);
+  EXPECT_EQ(r->diagnostics.items()[0].number, 990012);
+  auto profile = test_profile();
+  profile.tool_table_complete = true;
+  auto strict = run_program("T=\"fr_4\"\nM6\nM30\n", profile);
+  ASSERT_TRUE(strict->alarm);
+  EXPECT_EQ(strict->alarm->number, 17190);
+  EXPECT_EQ(strict->alarm->where.line, 1u);
 }
 
 TEST(Interpreter, CompensationNeedsToolAndEdge) {

@@ -1,0 +1,142 @@
+#include "interp/tool_state.hpp"
+
+#include <cstdlib>
+
+namespace drycut::interp {
+namespace {
+
+constexpr int kToolNotInTable = 990012;  // drycut warning: zero offsets assumed
+constexpr int kIllegalTNumber = 17190;
+constexpr int kIllegalDNumber = 17180;
+constexpr int kMaxNumber = 32000;  // T and D numbers
+
+std::optional<int> tool_number(const std::string& id) {
+  char* end = nullptr;
+  const long n = std::strtol(id.c_str(), &end, 10);
+  if (id.empty() || !end || *end != '\0' || n < 0 || n > kMaxNumber) return std::nullopt;
+  return static_cast<int>(n);
+}
+
+}  // namespace
+
+ToolState::ToolState(const machine::MachineProfile& profile)
+    : table_(profile.tools),
+      change_mode_(profile.tool_change_mode),
+      change_m_code_(profile.tool_change_m_code),
+      edge_default_(profile.cutting_edge_default),
+      table_complete_(profile.tool_table_complete) {}
+
+const machine::Tool* ToolState::find(const std::string& id) const {
+  // T="name" selects by name (case-sensitive), T<n> by number (kept as its decimal text).
+  for (const auto& t : table_)
+    if (t.name == id) return &t;
+  if (auto n = tool_number(id))
+    for (const auto& t : table_)
+      if (t.number == *n) return &t;
+  return nullptr;
+}
+
+machine::Tool* ToolState::find_by_number(int number) {
+  for (auto& t : table_)
+    if (t.number == number) return &t;
+  return nullptr;
+}
+
+void ToolState::missing(int number, const std::string& detail, std::vector<ToolNotice>& notices) const {
+  if (table_complete_)
+    notices.push_back({number, detail, true});
+  else
+    notices.push_back({kToolNotInTable, detail + "; length 0 and radius 0 assumed", false});
+}
+
+bool ToolState::program_tool(const std::string& id, std::vector<ToolNotice>& notices) {
+  // T0 and T00 are the same empty tool.
+  const std::string key = tool_number(id) ? std::to_string(*tool_number(id)) : id;
+  if (key != "0" && !find(key)) missing(kIllegalTNumber, "tool " + key + " is not in the tool table", notices);
+  programmed_ = key;
+  change_pending_ = true;
+  remembered_edge_.reset();
+  return change_mode_ == 0;
+}
+
+void ToolState::select_edge(int d, std::vector<ToolNotice>& notices) {
+  if (change_pending_) remembered_edge_ = d;
+  // With no tool in the spindle the D waits for the prepared tool (or is D0: nothing to do).
+  if (!has_tool()) {
+    edge_ = d;
+    offsets_ = {};
+    if (d != 0 && !change_pending_)
+      missing(kIllegalDNumber, "D" + std::to_string(d) + " without a tool in the spindle", notices);
+    return;
+  }
+  // A D meant for the prepared tool may name an edge the old one lacks: no notice for that.
+  std::vector<ToolNotice> ignored;
+  activate_edge(d, change_pending_ ? ignored : notices);
+}
+
+void ToolState::change_tool(std::optional<int> d, std::vector<ToolNotice>& notices) {
+  const int old_edge = edge_;
+  const ToolOffsets old_offsets = offsets_;
+  if (programmed_) active_ = programmed_;  // M6 without a new T changes to the last one again
+  change_pending_ = false;
+  std::optional<int> edge = d ? d : remembered_edge_;
+  remembered_edge_.reset();
+  if (!has_tool()) {
+    edge_ = 0;
+    offsets_ = {};
+    return;
+  }
+  if (!edge) {
+    // MD20270 CUTTING_EDGE_DEFAULT.
+    if (edge_default_ == -2) {
+      edge_ = old_edge;
+      offsets_ = old_offsets;  // the old tool's offsets stay until a D is programmed
+      return;
+    }
+    edge = edge_default_ == -1 ? old_edge : edge_default_;
+  }
+  activate_edge(*edge, notices);
+}
+
+void ToolState::activate_edge(int d, std::vector<ToolNotice>& notices) {
+  edge_ = d;
+  offsets_ = {};
+  if (d == 0 || !has_tool()) return;
+  const machine::Tool* tool = find(*active_);
+  if (!tool) {
+    // Already reported when the tool was programmed: the edge of an unknown tool is zero.
+    if (table_complete_) missing(kIllegalDNumber, "tool " + *active_ + " is not in the tool table", notices);
+    return;
+  }
+  for (const auto& e : tool->edges) {
+    if (e.d == d) {
+      offsets_ = {e.length_mm, e.radius_mm};
+      return;
+    }
+  }
+  missing(kIllegalDNumber, "tool " + *active_ + " has no edge D" + std::to_string(d), notices);
+}
+
+bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
+  if (parameter < 1 || parameter > 25 || t < 1 || t > kMaxNumber || d < 1 || d > kMaxNumber) return false;
+  machine::Tool* tool = find_by_number(t);
+  if (!tool) {
+    table_.push_back({std::to_string(t), t, {}});
+    tool = &table_.back();
+  }
+  machine::ToolEdge* edge = nullptr;
+  for (auto& e : tool->edges)
+    if (e.d == d) edge = &e;
+  if (!edge) {
+    tool->edges.push_back({d, 0.0, 0.0});
+    edge = &tool->edges.back();
+  }
+  if (parameter == 3) edge->length_mm = value;
+  if (parameter == 6) edge->radius_mm = value;
+  // The active edge takes the new value at once (the control re-reads it with the next D or
+  // motion; drycut applies it with the next motion as for any length change).
+  if (has_tool() && edge_ == d && find(*active_) == tool) offsets_ = {edge->length_mm, edge->radius_mm};
+  return true;
+}
+
+}  // namespace drycut::interp

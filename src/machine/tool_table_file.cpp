@@ -1,0 +1,105 @@
+#include "machine/tool_table_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace drycut::machine {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) cells.push_back(trim(cell));
+  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  return cells;
+}
+
+double number_cell(const std::string& text, const std::string& where) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || !end || *end != '\0' || !std::isfinite(v)) throw ProfileError(where + ": '" + text + "' is not a number");
+  return v;
+}
+
+int integer_cell(const std::string& text, int low, int high, const std::string& where) {
+  const double v = number_cell(text, where);
+  if (v != std::floor(v) || v < low || v > high)
+    throw ProfileError(where + ": must be a whole number " + std::to_string(low) + ".." + std::to_string(high));
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string& origin) {
+  static const std::vector<std::string> kColumns{"number", "name", "d", "length_mm", "radius_mm"};
+  std::istringstream in(text);
+  std::string line;
+  std::map<std::string, size_t> column;
+  std::vector<Tool> tools;
+  for (int line_no = 1; std::getline(in, line); ++line_no) {
+    const std::string where = origin + ":" + std::to_string(line_no);
+    line = trim(line);
+    if (line.empty() || line.front() == '#') continue;
+    const auto cells = split(line);
+    if (column.empty()) {
+      for (size_t i = 0; i < cells.size(); ++i) {
+        if (std::find(kColumns.begin(), kColumns.end(), cells[i]) == kColumns.end())
+          throw ProfileError(where + ": unknown column '" + cells[i] + "' (columns: number,name,d,length_mm,radius_mm)");
+        column[cells[i]] = i;
+      }
+      if (!column.count("number") || !column.count("d")) throw ProfileError(where + ": the header needs columns number and d");
+      continue;
+    }
+    auto cell = [&](const std::string& name) -> std::string {
+      auto it = column.find(name);
+      return it != column.end() && it->second < cells.size() ? cells[it->second] : "";
+    };
+    const int number = integer_cell(cell("number"), 0, 32000, where + " number");
+    ToolEdge edge;
+    edge.d = integer_cell(cell("d"), 1, 32000, where + " d");
+    if (!cell("length_mm").empty()) edge.length_mm = number_cell(cell("length_mm"), where + " length_mm");
+    if (!cell("radius_mm").empty()) edge.radius_mm = number_cell(cell("radius_mm"), where + " radius_mm");
+    if (edge.radius_mm < 0) throw ProfileError(where + " radius_mm: must be >= 0");
+    const std::string name = cell("name").empty() ? std::to_string(number) : cell("name");
+    auto it = std::find_if(tools.begin(), tools.end(), [&](const Tool& t) { return t.number == number; });
+    if (it == tools.end()) {
+      if (std::any_of(tools.begin(), tools.end(), [&](const Tool& t) { return t.name == name; }))
+        throw ProfileError(where + ": tool name '" + name + "' used by two numbers");
+      tools.push_back({name, number, {}});
+      it = tools.end() - 1;
+    } else if (it->name != name) {
+      throw ProfileError(where + ": tool " + std::to_string(number) + " named '" + it->name + "' before");
+    }
+    for (const auto& e : it->edges)
+      if (e.d == edge.d) throw ProfileError(where + ": tool " + std::to_string(number) + " edge D" + std::to_string(edge.d) + " twice");
+    it->edges.push_back(edge);
+  }
+  if (column.empty()) throw ProfileError(origin + ": no header row");
+  return tools;
+}
+
+std::vector<Tool> load_tool_table_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ProfileError(path + ": tool table file cannot be opened");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".csv") return load_tool_table_csv(text.str(), path);
+  if (ext == ".json") return load_tools_json(text.str(), path);
+  throw ProfileError(path + ": tool table must be a .csv or .json file");
+}
+
+}  // namespace drycut::machine

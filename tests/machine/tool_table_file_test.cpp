@@ -1,0 +1,81 @@
+// The tool table file of `--tools` (CSV and JSON) and the tool-change machine data.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "machine/machine_profile.hpp"
+#include "machine/tool_table_file.hpp"
+
+namespace drycut::machine {
+namespace {
+
+TEST(ToolTableCsv, OneRowPerEdgeMergedByNumber) {
+  const auto tools = load_tool_table_csv(
+      "# job 42\nnumber,name,d,length_mm,radius_mm\n1,FR_4,1,75.5,2\n\n1,FR_4,2,80,2.5\n7,,1,120,\n", "t.csv");
+  ASSERT_EQ(tools.size(), 2u);
+  EXPECT_EQ(tools[0].name, "FR_4");
+  ASSERT_EQ(tools[0].edges.size(), 2u);
+  EXPECT_DOUBLE_EQ(tools[0].edges[0].length_mm, 75.5);
+  EXPECT_DOUBLE_EQ(tools[0].edges[1].radius_mm, 2.5);
+  EXPECT_EQ(tools[1].name, "7");  // no name: the number
+  EXPECT_EQ(tools[1].number, 7);
+  EXPECT_DOUBLE_EQ(tools[1].edges[0].length_mm, 120.0);
+  EXPECT_DOUBLE_EQ(tools[1].edges[0].radius_mm, 0.0);
+}
+
+TEST(ToolTableCsv, ColumnsMayComeInAnyOrder) {
+  const auto tools = load_tool_table_csv("d,radius_mm,number\n2,3,5\n", "t.csv");
+  ASSERT_EQ(tools.size(), 1u);
+  EXPECT_EQ(tools[0].number, 5);
+  EXPECT_EQ(tools[0].edges[0].d, 2);
+  EXPECT_DOUBLE_EQ(tools[0].edges[0].radius_mm, 3.0);
+}
+
+TEST(ToolTableCsv, BadInputNamesFileAndLine) {
+  auto message = [](const std::string& text) {
+    try {
+      load_tool_table_csv(text, "t.csv");
+    } catch (const ProfileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("number,d,colour\n").find("t.csv:1: unknown column 'colour'"), std::string::npos);
+  EXPECT_NE(message("number,name\n").find("needs columns number and d"), std::string::npos);
+  EXPECT_NE(message("number,d\n1,x\n").find("t.csv:2 d"), std::string::npos);
+  EXPECT_NE(message("number,d\n1,1.5\n").find("whole number"), std::string::npos);
+  EXPECT_NE(message("number,d\n1,1\n1,1\n").find("edge D1 twice"), std::string::npos);
+  EXPECT_NE(message("number,d,radius_mm\n1,1,-2\n").find("must be >= 0"), std::string::npos);
+  EXPECT_NE(message("").find("no header"), std::string::npos);
+}
+
+TEST(ToolTableJson, ArrayOrObjectLikeTheProfile) {
+  const std::string array = R"([{"name": "A", "number": 3, "edges": [{"d": 1, "length_mm": 40, "radius_mm": 5}]}])";
+  const auto a = load_tools_json(array, "t.json");
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_DOUBLE_EQ(a[0].edges[0].length_mm, 40.0);
+  const auto b = load_tools_json("{\"tools\": " + array + "}", "t.json");
+  EXPECT_EQ(b[0].number, 3);
+  EXPECT_THROW(load_tools_json("{\"tool\": []}", "t.json"), ProfileError);
+}
+
+TEST(ToolChangeData, ReadValidatedAndWrittenBack) {
+  const MachineProfile& d = default_profile();
+  EXPECT_EQ(d.tool_change_mode, 1);
+  EXPECT_EQ(d.tool_change_m_code, 6);
+  EXPECT_EQ(d.cutting_edge_default, 1);
+  EXPECT_FALSE(d.tool_table_complete);
+  auto j = nlohmann::json::parse(profile_to_json(d));
+  j["program"]["tool_change_mode"] = 0;
+  j["program"]["cutting_edge_default"] = -2;
+  j["program"]["tool_table_complete"] = true;
+  const MachineProfile p = load_profile_json(j.dump(), "t");
+  EXPECT_EQ(p.tool_change_mode, 0);
+  EXPECT_EQ(p.cutting_edge_default, -2);
+  EXPECT_TRUE(p.tool_table_complete);
+  j["program"]["tool_change_mode"] = 2;
+  EXPECT_THROW(load_profile_json(j.dump(), "t"), ProfileError);
+}
+
+}  // namespace
+}  // namespace drycut::machine
