@@ -22,8 +22,21 @@ int motion_index(MotionMode m) {
     case MotionMode::BSpline: return 7;
     case MotionMode::CSpline: return 8;
     case MotionMode::ArcTangent: return 15;
+    case MotionMode::Thread: return 10;            // G33
+    case MotionMode::Tapping: return 11;           // G331
+    case MotionMode::TappingRetract: return 12;    // G332
+    case MotionMode::ThreadIncreasing: return 16;  // G34
+    case MotionMode::ThreadDecreasing: return 17;  // G35
   }
   return 0;
+}
+
+// T number of a tool selection ("5" -> 5; a named tool -> its number in the table; none -> 0).
+double tool_number(const std::optional<std::string>& id) {
+  if (!id) return 0.0;
+  char* end = nullptr;
+  const double v = std::strtod(id->c_str(), &end);
+  return end && *end == '\0' ? v : 0.0;
 }
 
 int code_index(int code) {
@@ -40,9 +53,9 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
     case 6: return s.plane == PlaneSelect::G17 ? 1 : s.plane == PlaneSelect::G18 ? 2 : 3;
     case 7: return s.compensation == CompensationSide::None ? 1 : s.compensation == CompensationSide::Left ? 2 : 3;
     case 8: return code_index(std::atoi(s.work_offset.c_str() + 1));
-    case 13: return s.inch ? (s.inch_feed ? 3 : 1) : 2;  // G70 G71 G700 G710 (G710 reads as G71)
+    case 13: return s.inch ? (s.feed_in_geometry_unit ? 3 : 1) : (s.feed_in_geometry_unit ? 4 : 2);  // G70 G71 G700 G710
     case 14: return s.absolute ? 1 : 2;
-    case 15: return s.feed_per_rev ? 3 : 2;
+    case 15: return s.feed_mode == FeedMode::InverseTime ? 1 : s.feed_mode == FeedMode::PerRevolution ? 3 : 2;
     case 18: return s.intersection_corners ? 2 : 1;
     default: return std::nullopt;
   }
@@ -60,7 +73,7 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
 std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<const Value> indices) const {
   // $TC_DPn[t, d]: edge d of tool t; DP3 = length 1, DP6 = radius.
   if (indices.size() != 2 || !indices[0].is_number() || !indices[1].is_number()) return std::nullopt;
-  const machine::Tool* tool = profile_.find_tool(static_cast<int>(indices[0].number));
+  const machine::Tool* tool = interpreter_.tools().find(parser::number_to_text(indices[0].number));
   if (!tool) return 0.0;
   for (const auto& e : tool->edges)
     if (e.d == static_cast<int>(indices[1].number)) return parameter == 6 ? e.radius_mm : parameter == 3 ? e.length_mm : 0.0;
@@ -75,22 +88,16 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_EP" || n == "$AA_IM" || n == "$AA_IW" || n == "$AA_IEN" || n == "$VA_IM") return number(axis_position(indices));
   if (n == "$P_F") return Value(s.feed);
   if (n == "$P_S" || n == "$AA_S") return Value(s.spindle_rpm);
-  if (n == "$P_TOOL") return Value(static_cast<double>(s.edge));
-  if (n == "$P_TOOLR" || n == "$P_AD[6]") return Value(s.tool_radius_mm);
-  if (n == "$P_TOOLNO" || n == "$TC_MPP6" || n == "$AC_TOOLNO") {
-    const char* t = s.active_tool ? s.active_tool->c_str() : "0";
-    char* end = nullptr;
-    const double v = std::strtod(t, &end);
-    return Value(end && *end == '\0' ? v : 0.0);
-  }
-  if (n == "$P_TOOLP") {
-    const char* t = s.prepared_tool ? s.prepared_tool->c_str() : "0";
-    return Value(std::atof(t));
-  }
+  const ToolState& tools = interpreter_.tools();
+  if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
+  if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
+  if (n == "$P_TOOLL") return Value(tools.offsets().length_mm);
+  if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools.active_tool()));
+  if (n == "$P_TOOLP") return Value(tool_number(tools.programmed_tool()));
   if (n == "$TC_DP3") return number(tool_datum(3, indices));
   if (n == "$TC_DP6") return number(tool_datum(6, indices));
   if (n == "$TC_GETT" && indices.size() == 1) {
-    if (const machine::Tool* t = profile_.find_tool(indices[0].text)) return Value(static_cast<double>(t->number));
+    if (const machine::Tool* t = tools.find(indices[0].text)) return Value(static_cast<double>(t->number));
     return Value(-1.0);
   }
   if (n == "$AC_TIME" || n == "$AC_PATHN") return Value(0.0);

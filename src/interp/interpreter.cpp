@@ -132,6 +132,7 @@ void Interpreter::warn_once(const BlockContext& ctx, const std::string& what, ui
 void Interpreter::execute(const parser::Block& block) {
   if (ended_) return;
   BlockContext ctx(block);
+  apply_system_writes(block);
   apply_g_words(ctx);
   apply_commands(ctx);
   apply_addresses(ctx);

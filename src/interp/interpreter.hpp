@@ -68,6 +68,7 @@ class Interpreter {
     Eigen::Vector3d length_after = Eigen::Vector3d::Zero();
   };
 
+  void apply_system_writes(const parser::Block& block);  // system_variable_writes.cpp
   void apply_g_words(BlockContext& ctx);
   void apply_commands(BlockContext& ctx);
   void apply_addresses(BlockContext& ctx);

@@ -65,9 +65,10 @@ class ToolState {
   const ToolOffsets& offsets() const { return offsets_; }
   // A tool is in the spindle (not none, not T0).
   bool has_tool() const { return active_ && *active_ != "0"; }
+  // The run's tool table entry for "5" (T5) or a name; nullptr when absent.
+  const machine::Tool* find(const std::string& id) const;
 
  private:
-  const machine::Tool* find(const std::string& id) const;
   machine::Tool* find_by_number(int number);
   // The offsets of edge d of the active tool; notices when tool or edge are not in the table.
   void activate_edge(int d, std::vector<ToolNotice>& notices);
