@@ -11,6 +11,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/program_pipeline.hpp"
 #include "machine/alarm.hpp"
 #include "parser/block.hpp"
 #include "parser/program_loader.hpp"
@@ -23,6 +24,7 @@ struct CheckOptions {
   std::vector<std::string> search_path;
   bool json = false;
   uint64_t max_steps = 100'000'000;
+  bool missing_programs_warn = false;
 };
 
 nlohmann::json alarm_json(const Alarm& a) {
@@ -36,10 +38,14 @@ nlohmann::json alarm_json(const Alarm& a) {
 }
 
 int run_check(const CheckOptions& opt) {
-  parser::LoaderOptions lo;
-  for (const auto& d : opt.search_path) lo.search_path.emplace_back(d);
-  lo.max_steps = opt.max_steps;
   Diagnostics diagnostics;
+  parser::LoaderOptions lo;
+  try {
+    lo = loader_options(opt.search_path, opt.max_steps, opt.missing_programs_warn);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "drycut check: %s\n", e.what());
+    return kExitUsage;
+  }
   parser::ProgramLoader loader(lo, diagnostics);
   try {
     loader.open_main(opt.program);
@@ -86,6 +92,7 @@ void register_check(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "Print a JSON object instead of the summary line");
   cmd->add_option("--max-steps", opt->max_steps, "Lines executed before an endless-loop alarm")
       ->check(CLI::PositiveNumber);
+  add_missing_programs_option(*cmd, opt->missing_programs_warn);
   cmd->callback([opt] { throw ExitRequest{run_check(*opt)}; });
 }
 

@@ -5,7 +5,6 @@
 #include "app/exit_code.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
-#include "parser/program_loader.hpp"
 #include "report/progress_display.hpp"
 
 namespace drycut::app {
@@ -20,6 +19,36 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
                  "Blocks executed before the run is stopped as an endless loop")
       ->default_val(options.max_steps);
   cmd.add_flag("-q,--quiet", options.quiet, "No progress display");
+  add_missing_programs_option(cmd, options.missing_programs_warn);
+}
+
+void add_missing_programs_option(CLI::App& cmd, bool& warn) {
+  cmd.add_option_function<std::string>(
+         "--missing-programs", [&warn](const std::string& mode) { warn = mode == "warn"; },
+         "A called subprogram found in no folder: alarm (default, as the control) or warn")
+      ->check(CLI::IsMember({"alarm", "warn"}));
+}
+
+namespace {
+// parser::LoaderOptions gains `bool missing_programs_warn` with the loader's behaviour; until
+// then this compiles without it and refuses the option instead of silently ignoring it.
+template <typename Options>
+void set_missing_programs_warn(Options& options, bool warn) {
+  if constexpr (requires { options.missing_programs_warn = warn; }) {
+    options.missing_programs_warn = warn;
+  } else if (warn) {
+    throw UsageError("--missing-programs warn is not supported by this build's program loader");
+  }
+}
+}  // namespace
+
+parser::LoaderOptions loader_options(const std::vector<std::string>& search_path, uint64_t max_steps,
+                                     bool missing_programs_warn) {
+  parser::LoaderOptions lo;
+  for (const auto& dir : search_path) lo.search_path.emplace_back(dir);
+  lo.max_steps = max_steps;
+  set_missing_programs_warn(lo, missing_programs_warn);
+  return lo;
 }
 
 machine::MachineProfile load_machine(const ProgramOptions& options) {
@@ -34,10 +63,8 @@ machine::MachineProfile load_machine(const ProgramOptions& options) {
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
                             interp::ElementSink& sink) {
   PipelineOutcome outcome;
-  parser::LoaderOptions loader_options;
-  for (const auto& dir : options.search_path) loader_options.search_path.emplace_back(dir);
-  loader_options.max_steps = options.max_steps;
-  parser::ProgramLoader loader(loader_options, outcome.diagnostics);
+  parser::ProgramLoader loader(loader_options(options.search_path, options.max_steps, options.missing_programs_warn),
+                               outcome.diagnostics);
   loader.open_main(options.program);  // UsageError when the file cannot be read
 
   interp::Interpreter interpreter(profile, sink, outcome.diagnostics);

@@ -11,6 +11,7 @@
 #include "interp/path_element.hpp"
 #include "machine/alarm.hpp"
 #include "machine/machine_profile.hpp"
+#include "parser/program_loader.hpp"
 
 namespace drycut::app {
 
@@ -20,10 +21,21 @@ struct ProgramOptions {
   std::string machine_file;        // empty = embedded default profile
   uint64_t max_steps = 100'000'000;
   bool quiet = false;              // no progress display
+  bool missing_programs_warn = false;  // --missing-programs warn: a call of a missing program warns
 };
 
-// Adds PROGRAM, --search-path, --machine, --max-steps to a subcommand.
+// Adds PROGRAM, --search-path, --machine, --max-steps, --missing-programs to a subcommand.
 void add_program_options(CLI::App& cmd, ProgramOptions& options);
+
+// `--missing-programs alarm|warn` (default alarm): whether calling a subprogram that is in no
+// searched folder stops the run with the control's alarm, or only warns (for programs checked
+// without all of the machine's cycles at hand).
+void add_missing_programs_option(CLI::App& cmd, bool& warn);
+
+// The loader options of the command line: search path, step limit, missing programs.
+// Throws UsageError for `--missing-programs warn` while the loader cannot do it.
+parser::LoaderOptions loader_options(const std::vector<std::string>& search_path, uint64_t max_steps,
+                                     bool missing_programs_warn);
 
 // Loads the machine profile named by the options (UsageError on a bad file).
 machine::MachineProfile load_machine(const ProgramOptions& options);
