@@ -146,6 +146,15 @@ void expect_completion(const json& summary, const ConformanceSpec& spec) {
   }
 }
 
+// A temporary file removed however the test ends (an ASSERT returns early).
+struct RemovedAtEnd {
+  fs::path path;
+  ~RemovedAtEnd() {
+    std::error_code ec;
+    fs::remove(path, ec);
+  }
+};
+
 class Conformance : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Conformance, Program) {
@@ -168,6 +177,7 @@ TEST_P(Conformance, Program) {
   // run: the JSON report into a file of this process, the text summary and stderr for the trace.
   const fs::path report = fs::temp_directory_path() / ("drycut_conformance_" + std::to_string(::getpid()) + "_" +
                                                        sanitized(GetParam()) + ".json");
+  const RemovedAtEnd report_file{report};
   const CliRun run = run_shell(in_folder(program, "run", "-q --json " + quoted(report) + " 2>&1"));
   SCOPED_TRACE("drycut run said:\n" + run.out.substr(0, 2000));
   json run_json;
@@ -175,7 +185,6 @@ TEST_P(Conformance, Program) {
     std::ifstream in(report, std::ios::binary);
     ASSERT_NO_THROW(run_json = json::parse(in)) << "run wrote no JSON report";
   }
-  fs::remove(report);
   json diagnostics = run_json.value("alarms", json::array());
   for (const auto& w : run_json.value("warnings", json::array())) diagnostics.push_back(w);
   const Outcome run_outcome = outcome_of(run.exit_code, diagnostics);
