@@ -12,6 +12,7 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/loader_setup.hpp"
+#include "app/program_pipeline.hpp"
 #include "machine/alarm.hpp"
 #include "parser/block.hpp"
 #include "parser/program_loader.hpp"
@@ -26,6 +27,7 @@ struct CheckOptions {
   std::string machine_file;
   bool json = false;
   uint64_t max_steps = 100'000'000;
+  bool missing_programs_warn = false;
 };
 
 nlohmann::json alarm_json(const Alarm& a) {
@@ -48,7 +50,8 @@ int run_check(const CheckOptions& opt) {
     return kExitUsage;
   }
   // The same loader set-up as `run`: one language, one machine.
-  parser::ProgramLoader loader(make_loader_options(opt.search_path, opt.max_steps, opt.definition_dirs, profile),
+  parser::ProgramLoader loader(
+      make_loader_options(opt.search_path, opt.max_steps, opt.definition_dirs, opt.missing_programs_warn, profile),
                                diagnostics);
   try {
     loader.open_main(opt.program);
@@ -98,6 +101,7 @@ void register_check(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "Print a JSON object instead of the summary line");
   cmd->add_option("--max-steps", opt->max_steps, "Lines executed before an endless-loop alarm")
       ->check(CLI::PositiveNumber);
+  add_missing_programs_option(*cmd, opt->missing_programs_warn);
   cmd->callback([opt] { throw ExitRequest{run_check(*opt)}; });
 }
 

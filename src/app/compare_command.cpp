@@ -65,6 +65,7 @@ void register_compare(CLI::App& app) {
           if (a.severity == Severity::Alarm) ++row.alarms;
           std::fprintf(stderr, "%s\n", a.format().c_str());
         }
+        row.completion = report::run_completion(run.outcome.diagnostics.items(), run.outcome.alarm);
         any_alarm = any_alarm || run.outcome.alarm || row.alarms > 0;
         row.path = std::move(run.plots.programmed_path);
         rows.push_back(std::move(row));

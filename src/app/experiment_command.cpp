@@ -17,6 +17,7 @@
 #include "app/program_pipeline.hpp"
 #include "measured_equidistant_json.hpp"
 #include "motion/planner.hpp"
+#include "report/run_completion.hpp"
 #include "workload/thesis_programs.hpp"
 
 namespace drycut::app {
@@ -41,6 +42,7 @@ struct Row {
   size_t dips = 0;
   size_t warnings = 0;
   std::string alarm;  // first alarm, empty when clean
+  report::RunCompletion completion;  // a stopped run's figures cover only the blocks before its alarm
   bool measured = false;
   double measured_time_s = 0;
   double measured_min_feed = 0;
@@ -105,6 +107,7 @@ Row run_one(const workload::ThesisProgram& p, const std::filesystem::path& dir, 
   PipelineOutcome outcome = run_program_tool_centre(options, profile, planner);
   for (const auto& a : outcome.diagnostics.items())
     if (a.severity == Severity::Alarm && row.alarm.empty()) row.alarm = a.format();
+  row.completion = report::run_completion(outcome.diagnostics.items(), outcome.alarm);
   row.warnings = outcome.diagnostics.warning_count();
   const auto& s = planner.summary();
   row.time_s = s.time_s;
@@ -211,7 +214,11 @@ int run_experiment(const ExperimentOptions& o) {
                          {"time_to_contour_end_s", r.to_contour_end_s}, {"contour_min_feed_mm_min", r.contour_min_feed_mm_min},
                          {"min_feed_mm_min", r.min_feed_mm_min},
                          {"dips", r.dips},        {"warnings", r.warnings},
-                         {"alarm", r.alarm}};
+                         {"alarm", r.alarm},      {"complete", r.completion.complete}};
+      row["stopped_at"] = r.completion.complete ? nlohmann::json()
+                                                : nlohmann::json{{"file", r.completion.file},
+                                                                 {"line", r.completion.line},
+                                                                 {"alarm", r.completion.alarm_number}};
       if (r.measured) {
         row["measured_time_s"] = r.measured_time_s;
         row["measured_min_feed_mm_min"] = r.measured_min_feed;

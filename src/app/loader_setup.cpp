@@ -6,11 +6,12 @@ namespace drycut::app {
 
 parser::LoaderOptions make_loader_options(const std::vector<std::string>& search_path, uint64_t max_steps,
                                           const std::vector<std::string>& definition_dirs,
-                                          const machine::MachineProfile& profile) {
+                                          bool missing_programs_warn, const machine::MachineProfile& profile) {
   parser::LoaderOptions o;
   for (const auto& dir : search_path) o.search_path.emplace_back(dir);
   for (const auto& dir : definition_dirs) o.definition_dirs.emplace_back(dir);
   o.max_steps = max_steps;
+  o.missing_programs_warn = missing_programs_warn;
   parser::add_machine(o, profile);
   return o;
 }

@@ -13,6 +13,6 @@ namespace drycut::app {
 
 parser::LoaderOptions make_loader_options(const std::vector<std::string>& search_path, uint64_t max_steps,
                                           const std::vector<std::string>& definition_dirs,
-                                          const machine::MachineProfile& profile);
+                                          bool missing_programs_warn, const machine::MachineProfile& profile);
 
 }  // namespace drycut::app

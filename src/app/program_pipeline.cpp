@@ -28,6 +28,14 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
                  "Blocks executed before the run is stopped as an endless loop")
       ->default_val(options.max_steps);
   cmd.add_flag("-q,--quiet", options.quiet, "No progress display");
+  add_missing_programs_option(cmd, options.missing_programs_warn);
+}
+
+void add_missing_programs_option(CLI::App& cmd, bool& warn) {
+  cmd.add_option_function<std::string>(
+         "--missing-programs", [&warn](const std::string& mode) { warn = mode == "warn"; },
+         "A called subprogram found in no folder: alarm (default, as the control) or warn")
+      ->check(CLI::IsMember({"alarm", "warn"}));
 }
 
 machine::MachineProfile load_machine(const ProgramOptions& options) {
@@ -50,8 +58,9 @@ machine::MachineProfile load_machine(const ProgramOptions& options) {
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
                             interp::ElementSink& sink) {
   PipelineOutcome outcome;
-  parser::ProgramLoader loader(
-      make_loader_options(options.search_path, options.max_steps, options.definition_dirs, profile), outcome.diagnostics);
+  parser::ProgramLoader loader(make_loader_options(options.search_path, options.max_steps, options.definition_dirs,
+                                                   options.missing_programs_warn, profile),
+                               outcome.diagnostics);
   loader.open_main(options.program);  // UsageError when the file cannot be read
 
   interp::Interpreter interpreter(profile, sink, outcome.diagnostics);

@@ -11,6 +11,7 @@
 #include "interp/path_element.hpp"
 #include "machine/alarm.hpp"
 #include "machine/machine_profile.hpp"
+#include "parser/program_loader.hpp"
 
 namespace drycut::app {
 
@@ -22,10 +23,17 @@ struct ProgramOptions {
   std::string tools_file;          // empty = the profile's tool table; else it replaces it
   uint64_t max_steps = 100'000'000;
   bool quiet = false;              // no progress display
+  bool missing_programs_warn = false;  // --missing-programs warn: a call of a missing program warns
 };
 
-// Adds PROGRAM, --search-path, --definitions, --machine, --tools, --max-steps to a subcommand.
+// Adds PROGRAM, --search-path, --definitions, --machine, --tools, --max-steps,
+// --missing-programs to a subcommand.
 void add_program_options(CLI::App& cmd, ProgramOptions& options);
+
+// `--missing-programs alarm|warn` (default alarm): whether calling a subprogram that is in no
+// searched folder stops the run with the control's alarm, or only warns (for programs checked
+// without all of the machine's cycles at hand).
+void add_missing_programs_option(CLI::App& cmd, bool& warn);
 
 // Loads the machine profile named by the options, with the --tools table in place of the
 // profile's (UsageError on a bad file).

@@ -4,11 +4,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_pipeline.hpp"
 #include "motion/planner.hpp"
+#include "report/html_element_tap.hpp"
+#include "report/run_completion.hpp"
 #include "report/run_report_writer.hpp"
 #include "report/trace_csv_writer.hpp"
 
@@ -30,8 +33,11 @@ FilePtr open_output(const std::string& path) {
   return f;
 }
 
-void print_summary(const RunOptions& o, const machine::MachineProfile& profile, const motion::PlanSummary& s) {
+void print_summary(const RunOptions& o, const machine::MachineProfile& profile, const motion::PlanSummary& s,
+                   const report::RunCompletion& completion) {
   std::printf("%s on %s\n", std::filesystem::path(o.program.program).filename().string().c_str(), profile.name.c_str());
+  // A stopped run's figures are partial: say so before them, not after.
+  if (!completion.complete) std::printf("  INCOMPLETE: %s\n", report::incomplete_note(completion).c_str());
   std::printf("  time               %9.2f s\n", s.time_s);
   std::printf("  time after M0      %9.2f s\n", s.time_after_m0_s);
   std::printf("  path length        %9.1f mm\n", s.path_length_mm);
@@ -80,10 +86,16 @@ void register_run(CLI::App& app) {
       motion::PlannerOptions planner_options;
       planner_options.emit_samples = tracer != nullptr;
       motion::Planner planner(profile, observer, planner_options);
-      PipelineOutcome outcome = run_program_tool_centre(o->program, profile, planner);
+      // The end of the last motion the planner receives: the machine position after the run.
+      std::optional<motion::Vec3> end_position;
+      report::ElementTap end_tap(planner, [&end_position](const interp::PathElement& e) {
+        if (e.is_motion() && e.curve) end_position = e.curve->end();
+      });
+      PipelineOutcome outcome = run_program_tool_centre(o->program, profile, end_tap);
       const motion::PlanSummary& summary = planner.summary();
-      if (report) report->finish(summary, outcome.diagnostics);
-      print_summary(*o, profile, summary);
+      const report::RunCompletion completion = report::run_completion(outcome.diagnostics.items(), outcome.alarm);
+      if (report) report->finish(summary, outcome.diagnostics, completion, end_position);
+      print_summary(*o, profile, summary, completion);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut run: %s\n", e.what());

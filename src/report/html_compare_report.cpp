@@ -22,6 +22,20 @@ std::string fmt(const char* format, double v) {
 
 std::string name_of(const std::string& program) { return std::filesystem::path(program).filename().string(); }
 
+// "stopped by alarm 14040 at A.MPF:9" (the table says once below that the figures are partial).
+std::string stopped_where(const RunCompletion& c) {
+  return "stopped by alarm " + std::to_string(c.alarm_number) + " at " + name_of(c.file) + ":" + std::to_string(c.line);
+}
+
+bool any_incomplete(const std::vector<CompareRow>& rows) {
+  for (const auto& r : rows)
+    if (!r.completion.complete) return true;
+  return false;
+}
+
+constexpr const char* kPartialFigures =
+    "INCOMPLETE: the run stopped at an alarm; its figures cover only the blocks before it.";
+
 }  // namespace
 
 std::string program_colour(size_t index) {
@@ -52,8 +66,10 @@ std::string compare_table_text(const std::vector<CompareRow>& rows) {
     o += buf;
     if (deviation) o += r.has_deviation ? fmt("  %12.4f", r.max_deviation_mm) : std::string("  ") + std::string(12, '-');
     if (r.alarms) o += "  (" + std::to_string(r.alarms) + " alarm" + (r.alarms > 1 ? "s)" : ")");
+    if (!r.completion.complete) o += "  INCOMPLETE, " + stopped_where(r.completion);
     o += "\n";
   }
+  if (any_incomplete(rows)) o += std::string(kPartialFigures) + "\n";
   return o;
 }
 
@@ -68,7 +84,12 @@ std::string compare_json(const std::vector<CompareRow>& rows) {
                         {"path_length_mm", r.path_length_mm},
                         {"program_bytes", r.program_bytes},
                         {"max_deviation_mm", r.has_deviation ? nlohmann::json(r.max_deviation_mm) : nlohmann::json()},
-                        {"alarms", r.alarms}});
+                        {"alarms", r.alarms},
+                        {"complete", r.completion.complete},
+                        {"stopped_at", r.completion.complete ? nlohmann::json()
+                                                             : nlohmann::json{{"file", r.completion.file},
+                                                                              {"line", r.completion.line},
+                                                                              {"alarm", r.completion.alarm_number}}}});
   return nlohmann::json{{"programs", programs}}.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
@@ -86,16 +107,20 @@ std::string render_compare_report(const std::vector<CompareRow>& rows,
   o += "<th>alarms</th></tr>\n";
   for (size_t i = 0; i < rows.size(); ++i) {
     const auto& r = rows[i];
-    o += "<tr><td><svg width=\"22\" height=\"10\"><line x1=\"0\" y1=\"5\" x2=\"22\" y2=\"5\" stroke=\"" +
+    o += r.completion.complete ? "<tr>" : "<tr class=\"incomplete\">";
+    o += "<td><svg width=\"22\" height=\"10\"><line x1=\"0\" y1=\"5\" x2=\"22\" y2=\"5\" stroke=\"" +
          program_colour(i) + "\" stroke-width=\"3\"/></svg></td><td><code>" + html_escape(name_of(r.program)) +
          "</code></td><td class=\"num\">" + fmt("%.2f", r.time_s) + "</td><td class=\"num\">" +
          fmt("%.2f", r.time_after_m0_s) + "</td><td class=\"num\">" + fmt("%.0f", r.min_feed_mm_min) +
          "</td><td class=\"num\">" + std::to_string(r.dips) + "</td><td class=\"num\">" + fmt("%.1f", r.path_length_mm) +
          "</td><td class=\"num\">" + std::to_string(r.program_bytes) + "</td>";
     if (deviation) o += "<td class=\"num\">" + (r.has_deviation ? fmt("%.4f", r.max_deviation_mm) : "&ndash;") + "</td>";
-    o += "<td class=\"num\">" + std::to_string(r.alarms) + "</td></tr>\n";
+    o += "<td class=\"num\">" + std::to_string(r.alarms) +
+         (r.completion.complete ? "" : "<br>incomplete, " + html_escape(stopped_where(r.completion))) + "</td></tr>\n";
   }
-  o += "</table>\n<h2>Programmed paths, top view</h2>\n";
+  o += "</table>\n";
+  if (any_incomplete(rows)) o += "<p id=\"incomplete\" class=\"incomplete\">" + std::string(kPartialFigures) + "</p>\n";
+  o += "<h2>Programmed paths, top view</h2>\n";
   SvgChart chart({"compare-paths", "Programmed paths overlaid (XY)", "X [mm]", "Y [mm]", 1100, 820, true, false, 0});
   if (!reference.empty()) {
     std::vector<XY> ref;

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "report/run_completion.hpp"
 #include "report/svg_decimator.hpp"
 
 namespace drycut::report {
@@ -21,13 +22,15 @@ struct CompareRow {
   bool has_deviation = false;
   double max_deviation_mm = 0;
   size_t alarms = 0;
+  RunCompletion completion;     // a stopped run's figures cover only the blocks before its alarm
   std::vector<PlotPoint> path;  // programmed path (decimated), for the overlay
 };
 
-// Fixed-width text table, one line per program.
+// Fixed-width text table, one line per program; a stopped run's line says INCOMPLETE and where.
 std::string compare_table_text(const std::vector<CompareRow>& rows);
 // {"programs": [{program, time_s, time_after_m0_s, min_feed_mm_min, dips, path_length_mm,
-//   program_bytes, max_deviation_mm (null without reference), alarms}, ...]}
+//   program_bytes, max_deviation_mm (null without reference), alarms, complete,
+//   stopped_at ({file, line, alarm} or null)}, ...]}
 std::string compare_json(const std::vector<CompareRow>& rows);
 std::string render_compare_report(const std::vector<CompareRow>& rows,
                                   const std::vector<std::pair<double, double>>& reference,

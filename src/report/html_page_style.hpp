@@ -16,6 +16,8 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; }
 code, td.block { font-family: "DejaVu Sans Mono", monospace; font-size: 12px; white-space: pre-wrap; }
 .status-ok { color: #1a7f37; font-weight: bold; }
 .status-alarm { color: #b2182b; font-weight: bold; }
+p.incomplete { background: #fdecec; border: 2px solid #b2182b; color: #7a0f1d; font-weight: bold; padding: 8px 12px; margin: 8px 0 12px 0; }
+tr.incomplete td { background: #fdecec; }
 tr.alarm td { background: #fdecec; }
 tr.warning td { background: #fff8e1; }
 svg.chart { display: block; margin: 8px 0 4px 0; background: #fff; }

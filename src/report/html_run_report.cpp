@@ -9,6 +9,7 @@
 
 #include "report/html_escape.hpp"
 #include "report/html_page_style.hpp"
+#include "report/run_completion.hpp"
 #include "report/svg_chart.hpp"
 
 namespace drycut::report {
@@ -199,6 +200,11 @@ std::string render_run_report(const RunReportInput& in) {
   o += "<p class=\"meta\">program <code>" + html_escape(in.program) + "</code> on " + html_escape(in.machine) + " &mdash; " +
        (alarms ? "<span class=\"status-alarm\">ended in an alarm</span>" : "<span class=\"status-ok\">ran clean</span>") +
        "</p>\n";
+  // A stopped run's figures are partial: the banner stands above every figure of the page.
+  const RunCompletion completion = run_completion(in.diagnostics, in.ended_in_alarm);
+  if (!completion.complete)
+    o += "<p id=\"incomplete\" class=\"incomplete\">Incomplete run: " + html_escape(incomplete_note(completion)) +
+         ".</p>\n";
   o += "<h2>Summary</h2>\n" + summary_table(in);
   o += "<h2>Alarms and warnings</h2>\n" + diagnostics_table(in);
   o += "<h2>Top view</h2>\n" + top_view(in, worst);

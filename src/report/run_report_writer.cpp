@@ -31,6 +31,13 @@ json summary_object(const motion::PlanSummary& s) {
               {"dips", s.dips.size() + s.dips_not_listed}};
 }
 
+// Where the run stopped (null when it went to the end) and where its last motion ended.
+void add_outcome(json& summary, const RunCompletion& c, const std::optional<motion::Vec3>& end) {
+  summary["complete"] = c.complete;
+  summary["stopped_at"] = c.complete ? json() : json{{"file", c.file}, {"line", c.line}, {"alarm", c.alarm_number}};
+  summary["end_position_mm"] = end ? json{{"x", end->x()}, {"y", end->y()}, {"z", end->z()}} : json();
+}
+
 json alarm_object(const Alarm& a) {
   return json{{"number", a.number},
               {"severity", a.severity == Severity::Warning ? "warning" : "alarm"},
@@ -60,7 +67,8 @@ void RunReportWriter::on_block(const motion::BlockTiming& timing) {
   first_row_ = false;
 }
 
-void RunReportWriter::finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics) {
+void RunReportWriter::finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics,
+                             const RunCompletion& completion, const std::optional<motion::Vec3>& end_position_mm) {
   json dips = json::array();
   for (const auto& d : summary.dips)
     dips.push_back({{"file", d.min_source.file_name()},
@@ -73,8 +81,10 @@ void RunReportWriter::finish(const motion::PlanSummary& summary, const Diagnosti
                     {"elements", d.element_count}});
   json alarms = json::array(), warnings = json::array();
   for (const auto& a : diagnostics.items()) (a.severity == Severity::Warning ? warnings : alarms).push_back(alarm_object(a));
+  json summary_with_outcome = summary_object(summary);
+  add_outcome(summary_with_outcome, completion, end_position_mm);
   std::fprintf(out_, "\n],\n\"summary\": %s,\n\"dips\": %s,\n\"alarms\": %s,\n\"warnings\": %s\n}\n",
-               dump(summary_object(summary), 2).c_str(), dump(dips, 2).c_str(), dump(alarms, 2).c_str(),
+               dump(summary_with_outcome, 2).c_str(), dump(dips, 2).c_str(), dump(alarms, 2).c_str(),
                dump(warnings, 2).c_str());
   std::fflush(out_);
 }

@@ -5,11 +5,16 @@
 //   { "program": ..., "machine": ..., "blocks": [ {file,line,label,time_s,length_mm,
 //     v_max_mm_min,v_min_mm_min,limit,rapid}, ... ], "summary": {...}, "dips": [...],
 //     "alarms": [...], "warnings": [...] }
+// The summary also says whether the run went to the end (`complete`, `stopped_at` {file, line,
+// alarm} or null) and where the last planned motion ended (`end_position_mm` {x, y, z}, machine
+// coordinates, or null without motion).
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "machine/alarm.hpp"
 #include "motion/plan_result.hpp"
+#include "report/run_completion.hpp"
 
 namespace drycut::report {
 
@@ -19,7 +24,8 @@ class RunReportWriter : public motion::PlanObserver {
   RunReportWriter(std::FILE* out, const std::string& program, const std::string& machine);
   void on_block(const motion::BlockTiming& timing) override;
   // Closes the document.
-  void finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics);
+  void finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics, const RunCompletion& completion,
+              const std::optional<motion::Vec3>& end_position_mm);
 
  private:
   std::FILE* out_;

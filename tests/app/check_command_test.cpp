@@ -87,6 +87,27 @@ TEST_F(CheckCommand, JsonListsTheAlarm) {
   EXPECT_EQ(j["alarms"].back()["column"], 5);
 }
 
+// `--missing-programs alarm` is the control's behaviour and the default; other values are usage
+// errors. The same option is on run, path and report.
+TEST_F(CheckCommand, MissingProgramsAlarmIsTheDefaultBehaviour) {
+  const CliRun r = run(path("MAIN.MPF") + " --missing-programs alarm", true);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("MAIN.MPF:3:5: ALARM 14011"), std::string::npos) << r.out;
+  EXPECT_EQ(run(path("MAIN.MPF") + " --missing-programs maybe").exit_code, 2);
+  for (const char* command : {"run", "path", "report -o /dev/null"}) {
+    const CliRun other = drycut::testing::run_shell(drycut::testing::drycut_command(
+        std::string(command) + " -q " + path("MAIN.MPF") + " --missing-programs alarm 2>&1 >/dev/null"));
+    EXPECT_EQ(other.exit_code, 1) << command << ": " << other.out;
+    EXPECT_NE(other.out.find("ALARM 14011"), std::string::npos) << command << ": " << other.out;
+    EXPECT_EQ(drycut::testing::run_shell(drycut::testing::drycut_command(std::string(command) + " -q " +
+                                                                         path("MAIN.MPF") +
+                                                                         " --missing-programs maybe 2>/dev/null"))
+                  .exit_code,
+              2)
+        << command;
+  }
+}
+
 TEST_F(CheckCommand, MissingMainFileIsUsageErrorExitTwo) {
   EXPECT_EQ(run(path("NOPE.MPF")).exit_code, 2);
 }

@@ -1,0 +1,28 @@
+#pragma once
+// Whether a run went to the end of the program or was stopped by an alarm, and where. The control
+// stops at the first alarm, so every figure of a stopped run (time, path length, feeds, dips)
+// covers only the blocks before that alarm; every report that prints figures says so.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "machine/alarm.hpp"
+
+namespace drycut::report {
+
+struct RunCompletion {
+  bool complete = true;
+  int alarm_number = 0;  // the alarm that stopped the run (0 when complete)
+  std::string file;      // where it stopped: the file and line of that alarm
+  uint32_t line = 0;
+};
+
+// The first alarm (not warning) in `diagnostics` is where the run stopped; `ended_in_alarm`
+// marks a stopped run even when the alarm is not in the list.
+RunCompletion run_completion(const std::vector<Alarm>& diagnostics, bool ended_in_alarm);
+
+// "stopped by alarm 14040 at PART.MPF:9; the figures cover the blocks before it" (file name
+// without folders), for text summaries and tables.
+std::string incomplete_note(const RunCompletion& completion);
+
+}  // namespace drycut::report
