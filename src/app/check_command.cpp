@@ -11,6 +11,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/standard_cycles.hpp"
 #include "machine/alarm.hpp"
 #include "parser/block.hpp"
 #include "parser/program_loader.hpp"
@@ -21,6 +22,7 @@ namespace {
 struct CheckOptions {
   std::string program;
   std::vector<std::string> search_path;
+  bool no_standard_cycles = false;
   bool json = false;
   uint64_t max_steps = 100'000'000;
 };
@@ -37,7 +39,7 @@ nlohmann::json alarm_json(const Alarm& a) {
 
 int run_check(const CheckOptions& opt) {
   parser::LoaderOptions lo;
-  for (const auto& d : opt.search_path) lo.search_path.emplace_back(d);
+  lo.search_path = search_path_with_cycles(opt.search_path, !opt.no_standard_cycles);
   lo.max_steps = opt.max_steps;
   Diagnostics diagnostics;
   parser::ProgramLoader loader(lo, diagnostics);
@@ -83,6 +85,8 @@ void register_check(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("check", "Parse and walk a part program; report alarms");
   cmd->add_option("program", opt->program, "Main program (.MPF)")->required();
   cmd->add_option("--search-path", opt->search_path, "Folder searched for subprograms (repeatable)");
+  cmd->add_flag("--no-standard-cycles", opt->no_standard_cycles,
+                "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
   cmd->add_flag("--json", opt->json, "Print a JSON object instead of the summary line");
   cmd->add_option("--max-steps", opt->max_steps, "Lines executed before an endless-loop alarm")
       ->check(CLI::PositiveNumber);

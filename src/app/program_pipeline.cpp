@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/exit_code.hpp"
+#include "app/standard_cycles.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/program_loader.hpp"
@@ -14,6 +15,8 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
   cmd.add_option("PROGRAM", options.program, "Main program (.MPF)")->required();
   cmd.add_option("--search-path", options.search_path,
                  "Folder searched for subprograms after the main program's folder (repeatable)");
+  cmd.add_flag("--no-standard-cycles", options.no_standard_cycles,
+               "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
   cmd.add_option("--machine", options.machine_file,
                  "Machine profile JSON (default: the embedded TAJMAC-ZPS MCV 1210)");
   cmd.add_option("--max-steps", options.max_steps,
@@ -35,7 +38,7 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
                             interp::ElementSink& sink) {
   PipelineOutcome outcome;
   parser::LoaderOptions loader_options;
-  for (const auto& dir : options.search_path) loader_options.search_path.emplace_back(dir);
+  loader_options.search_path = search_path_with_cycles(options.search_path, !options.no_standard_cycles);
   loader_options.max_steps = options.max_steps;
   parser::ProgramLoader loader(loader_options, outcome.diagnostics);
   loader.open_main(options.program);  // UsageError when the file cannot be read

@@ -17,12 +17,13 @@ namespace drycut::app {
 struct ProgramOptions {
   std::string program;
   std::vector<std::string> search_path;
+  bool no_standard_cycles = false; // true: drycut's own cycles (programs/cycles) are not searched
   std::string machine_file;        // empty = embedded default profile
   uint64_t max_steps = 100'000'000;
   bool quiet = false;              // no progress display
 };
 
-// Adds PROGRAM, --search-path, --machine, --max-steps to a subcommand.
+// Adds PROGRAM, --search-path, --no-standard-cycles, --machine, --max-steps to a subcommand.
 void add_program_options(CLI::App& cmd, ProgramOptions& options);
 
 // Loads the machine profile named by the options (UsageError on a bad file).

@@ -190,18 +190,6 @@ void Interpreter::apply_commands(BlockContext& ctx) {
         if (!axis || axis_index(*axis) < 0)
           raise(ctx, kUnsupported, "SPLINEPATH with axes other than X, Y, Z", c.column);
       }
-    } else if (n == "CYCLE832") {
-      // High-speed settings: mode 0 switches off, otherwise continuous path with tolerance
-      // smoothing and jerk limitation (the parts of the cycle that shape time; facts §1.8).
-      double mode = 1;
-      if (c.args.size() >= 2)
-        if (const auto* v = std::get_if<double>(&c.args[1])) mode = *v;
-      if (mode == 0) {
-        state_.transition = TransitionMode::Continuous;
-      } else {
-        state_.transition = TransitionMode::SmoothTolerance;
-        state_.accel = AccelProfile::Soft;
-      }
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
     } else if (!state_.apply_code(n)) {
