@@ -99,7 +99,9 @@ TEST(StandardCycles, ConformanceProgramsMeetTheirHandComputedExpectations) {
       EXPECT_TRUE(std::any_of(w.begin(), w.end(), [n](const auto& x) { return x["number"] == n; }))
           << "warning " << n << " missing: " << run.out;
     }
-    if (e.has_time) EXPECT_NEAR(j["summary"]["time_s"].get<double>(), e.time_s, e.time_tol);
+    if (e.has_time) {
+      EXPECT_NEAR(j["summary"]["time_s"].get<double>(), e.time_s, e.time_tol);
+    }
 
     if (!e.end.empty()) {
       const CliRun path = drycut::testing::run_in_folder("path", program, "--elements");
