@@ -1,5 +1,6 @@
-// `drycut check PROGRAM`: parses and walks the whole program (expressions evaluated, calls
-// followed) without interpreting motion, and reports alarms with their location.
+// `drycut check PROGRAM`: reads and interprets the whole program as `run` does (expressions
+// evaluated, calls, jumps and loops followed, every block interpreted, tool radius compensation
+// applied) without planning the motion, and reports alarms with their location.
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -11,23 +12,22 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
-#include "app/loader_setup.hpp"
 #include "app/program_pipeline.hpp"
+#include "interp/path_element.hpp"
 #include "machine/alarm.hpp"
-#include "parser/block.hpp"
-#include "parser/program_loader.hpp"
 
 namespace drycut::app {
 namespace {
 
 struct CheckOptions {
-  std::string program;
-  std::vector<std::string> search_path;
-  std::vector<std::string> definition_dirs;
-  std::string machine_file;
+  ProgramOptions program;
   bool json = false;
-  uint64_t max_steps = 100'000'000;
-  bool missing_programs_warn = false;
+};
+
+// Takes the elements and drops them: `check` interprets (and compensates) but does not plan.
+class DiscardingSink : public interp::ElementSink {
+ public:
+  void consume(interp::PathElement) override {}
 };
 
 nlohmann::json alarm_json(const Alarm& a) {
@@ -41,67 +41,47 @@ nlohmann::json alarm_json(const Alarm& a) {
 }
 
 int run_check(const CheckOptions& opt) {
-  Diagnostics diagnostics;
-  machine::MachineProfile profile;
+  // The same pipeline as `run` up to the planner: one language, one interpreter, one machine,
+  // so `check` accepts and refuses what `run` does (alarms of the planner itself excepted).
+  PipelineOutcome outcome;
   try {
-    profile = opt.machine_file.empty() ? machine::default_profile() : machine::load_profile_file(opt.machine_file);
-  } catch (const machine::ProfileError& e) {
-    std::fprintf(stderr, "drycut check: %s\n", e.what());
-    return kExitUsage;
-  }
-  // The same loader set-up as `run`: one language, one machine.
-  parser::ProgramLoader loader(
-      make_loader_options(opt.search_path, opt.max_steps, opt.definition_dirs, opt.missing_programs_warn, profile),
-                               diagnostics);
-  try {
-    loader.open_main(opt.program);
+    const machine::MachineProfile profile = load_machine(opt.program);
+    DiscardingSink sink;
+    outcome = run_program_tool_centre(opt.program, profile, sink);
   } catch (const UsageError& e) {
     std::fprintf(stderr, "drycut check: %s\n", e.what());
     return kExitUsage;
   }
-  try {
-    parser::Block block;
-    while (loader.next(block)) {
-    }
-  } catch (const AlarmError& e) {
-    diagnostics.report(e.alarm());
-  }
+  const Diagnostics& diagnostics = outcome.diagnostics;
   for (const Alarm& a : diagnostics.items()) std::fprintf(stderr, "%s\n", a.format().c_str());
-  const auto commands = loader.commands_used();
+  const auto& commands = outcome.commands_used;
   if (opt.json) {
     nlohmann::json j;
-    j["program"] = opt.program;
-    j["blocks_executed"] = loader.blocks_executed();
-    j["lines_executed"] = loader.steps();
-    j["programs_used"] = loader.programs_used().size();
-    j["programs"] = loader.programs_used();
+    j["program"] = opt.program.program;
+    j["blocks_executed"] = outcome.blocks;
+    j["lines_executed"] = outcome.lines;
+    j["programs_used"] = outcome.programs_used.size();
+    j["programs"] = outcome.programs_used;
     j["distinct_commands"] = commands.size();
     j["commands"] = commands;
     j["alarms"] = nlohmann::json::array();
     for (const Alarm& a : diagnostics.items()) j["alarms"].push_back(alarm_json(a));
     std::printf("%s\n", j.dump(2).c_str());
-  } else if (!diagnostics.has_alarms()) {
+  } else if (!diagnostics.has_alarms() && !outcome.alarm) {
     std::printf("%s: %llu blocks executed, %zu programs used, %zu distinct commands, %zu warnings\n",
-                opt.program.c_str(), static_cast<unsigned long long>(loader.blocks_executed()),
-                loader.programs_used().size(), commands.size(), diagnostics.warning_count());
+                opt.program.program.c_str(), static_cast<unsigned long long>(outcome.blocks),
+                outcome.programs_used.size(), commands.size(), diagnostics.warning_count());
   }
-  return diagnostics.has_alarms() ? kExitAlarm : kExitOk;
+  return outcome.alarm || diagnostics.has_alarms() ? kExitAlarm : kExitOk;
 }
 
 }  // namespace
 
 void register_check(CLI::App& app) {
   auto opt = std::make_shared<CheckOptions>();
-  CLI::App* cmd = app.add_subcommand("check", "Parse and walk a part program; report alarms");
-  cmd->add_option("program", opt->program, "Main program (.MPF)")->required();
-  cmd->add_option("--search-path", opt->search_path, "Folder searched for subprograms (repeatable)");
-  cmd->add_option("--definitions", opt->definition_dirs,
-                  "Folder of definition files (GUD/MAC .DEF) read before the program (repeatable)");
-  cmd->add_option("--machine", opt->machine_file, "Machine profile JSON (machine data the program reads)");
+  CLI::App* cmd = app.add_subcommand("check", "Interpret a part program without planning it; report alarms");
+  add_program_options(*cmd, opt->program);
   cmd->add_flag("--json", opt->json, "Print a JSON object instead of the summary line");
-  cmd->add_option("--max-steps", opt->max_steps, "Lines executed before an endless-loop alarm")
-      ->check(CLI::PositiveNumber);
-  add_missing_programs_option(*cmd, opt->missing_programs_warn);
   cmd->callback([opt] { throw ExitRequest{run_check(*opt)}; });
 }
 

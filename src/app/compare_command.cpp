@@ -33,6 +33,8 @@ void register_compare(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("compare", "Run several programs and compare time, feed, dips, size, deviation");
   cmd->add_option("PROGRAMS", o->programs, "Main programs (.MPF)")->required();
   cmd->add_option("--search-path", o->program.search_path, "Folder searched for subprograms (repeatable)");
+  cmd->add_flag("--no-standard-cycles", o->program.no_standard_cycles,
+                "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
   cmd->add_option("--machine", o->program.machine_file, "Machine profile JSON (default: the embedded profile)");
   cmd->add_option("--tools", o->program.tools_file, "Tool table (.csv or .json) replacing the profile's tools");
   cmd->add_option("--max-steps", o->program.max_steps, "Blocks executed before a run is stopped as an endless loop")

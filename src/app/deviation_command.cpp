@@ -7,6 +7,7 @@
 #include "app/commands.hpp"
 #include "app/curve_options.hpp"
 #include "app/exit_code.hpp"
+#include "app/standard_cycles.hpp"
 #include "app/program_pipeline.hpp"
 #include "workload/deviation_program_run.hpp"
 #include "workload/deviation_report.hpp"
@@ -32,7 +33,7 @@ int run_deviation(const DeviationOptions& o) {
   else if (o.curve.points_csv.empty()) control_points = workload::thesis_control_points(curve);
 
   workload::SampleOptions sample_options;
-  for (const auto& dir : o.program.search_path) sample_options.search_path.emplace_back(dir);
+  sample_options.search_path = search_path_with_cycles(o.program.search_path, !o.program.no_standard_cycles);
   sample_options.step_mm = o.step_mm;
   sample_options.max_steps = o.program.max_steps;
   const workload::SampledProgram sampled = workload::sample_program(o.program.program, profile, sample_options);

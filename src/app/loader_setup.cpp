@@ -1,14 +1,16 @@
 #include "app/loader_setup.hpp"
 
+#include "app/standard_cycles.hpp"
 #include "parser/loader_machine.hpp"
 
 namespace drycut::app {
 
 parser::LoaderOptions make_loader_options(const std::vector<std::string>& search_path, uint64_t max_steps,
                                           const std::vector<std::string>& definition_dirs,
-                                          bool missing_programs_warn, const machine::MachineProfile& profile) {
+                                          bool missing_programs_warn, bool standard_cycles,
+                                          const machine::MachineProfile& profile) {
   parser::LoaderOptions o;
-  for (const auto& dir : search_path) o.search_path.emplace_back(dir);
+  o.search_path = search_path_with_cycles(search_path, standard_cycles);
   for (const auto& dir : definition_dirs) o.definition_dirs.emplace_back(dir);
   o.max_steps = max_steps;
   o.missing_programs_warn = missing_programs_warn;

@@ -5,6 +5,7 @@
 #include "app/exit_code.hpp"
 #include "app/loader_setup.hpp"
 #include "interp/controller_state_view.hpp"
+#include "app/standard_cycles.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "machine/tool_table_file.hpp"
@@ -20,6 +21,8 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
   cmd.add_option("--definitions", options.definition_dirs,
                  "Folder of definition files (GUD/MAC .DEF) read before the program (repeatable); "
                  "*.DEF beside the main program are always read");
+  cmd.add_flag("--no-standard-cycles", options.no_standard_cycles,
+               "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
   cmd.add_option("--machine", options.machine_file,
                  "Machine profile JSON (default: the embedded TAJMAC-ZPS MCV 1210)");
   cmd.add_option("--tools", options.tools_file,
@@ -59,7 +62,7 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
                             interp::ElementSink& sink) {
   PipelineOutcome outcome;
   parser::ProgramLoader loader(make_loader_options(options.search_path, options.max_steps, options.definition_dirs,
-                                                   options.missing_programs_warn, profile),
+                                                   options.missing_programs_warn, !options.no_standard_cycles, profile),
                                outcome.diagnostics);
   loader.open_main(options.program);  // UsageError when the file cannot be read
 
@@ -88,7 +91,9 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
     outcome.alarm = true;
   }
   outcome.blocks = loader.blocks_executed();
+  outcome.lines = loader.steps();
   outcome.programs_used = loader.programs_used();
+  outcome.commands_used = loader.commands_used();
   return outcome;
 }
 

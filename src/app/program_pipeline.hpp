@@ -19,6 +19,7 @@ struct ProgramOptions {
   std::string program;
   std::vector<std::string> search_path;
   std::vector<std::string> definition_dirs;  // GUD/MAC definition files (.DEF)
+  bool no_standard_cycles = false; // true: drycut's own cycles (programs/cycles) are not searched
   std::string machine_file;        // empty = embedded default profile
   std::string tools_file;          // empty = the profile's tool table; else it replaces it
   uint64_t max_steps = 100'000'000;
@@ -26,8 +27,8 @@ struct ProgramOptions {
   bool missing_programs_warn = false;  // --missing-programs warn: a call of a missing program warns
 };
 
-// Adds PROGRAM, --search-path, --definitions, --machine, --tools, --max-steps,
-// --missing-programs to a subcommand.
+// Adds PROGRAM, --search-path, --definitions, --no-standard-cycles, --machine, --tools,
+// --max-steps, --missing-programs to a subcommand.
 void add_program_options(CLI::App& cmd, ProgramOptions& options);
 
 // `--missing-programs alarm|warn` (default alarm): whether calling a subprogram that is in no
@@ -43,7 +44,9 @@ struct PipelineOutcome {
   Diagnostics diagnostics;
   bool alarm = false;              // the run ended in an alarm
   uint64_t blocks = 0;             // blocks executed
+  uint64_t lines = 0;              // lines executed, including consumed ones (jumps, DEF ...)
   std::vector<std::string> programs_used;
+  std::vector<std::string> commands_used;  // distinct G/M words and commands, sorted
 };
 
 // Streams the program into the sink. Alarms end the run (the sink has received everything up to

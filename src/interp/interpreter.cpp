@@ -214,18 +214,6 @@ void Interpreter::apply_commands(BlockContext& ctx) {
         if (!axis || axis_index(*axis) < 0)
           raise(ctx, kUnsupported, "SPLINEPATH with axes other than X, Y, Z", c.column);
       }
-    } else if (n == "CYCLE832") {
-      // High-speed settings: mode 0 switches off, otherwise continuous path with tolerance
-      // smoothing and jerk limitation (the parts of the cycle that shape time; facts §1.8).
-      double mode = 1;
-      if (c.args.size() >= 2)
-        if (const auto* v = std::get_if<double>(&c.args[1])) mode = *v;
-      if (mode == 0) {
-        state_.transition = TransitionMode::Continuous;
-      } else {
-        state_.transition = TransitionMode::SmoothTolerance;
-        state_.accel = AccelProfile::Soft;
-      }
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
     } else if (!state_.apply_code(n)) {
@@ -466,16 +454,17 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
     return t;
   }
   // Through the workpiece system of the tool tip: axes not written keep their workpiece
-  // coordinate; the tool length is applied in full (a rotated frame moves every axis).
+  // coordinate; the tool length joins with the first move that writes its axis, as above.
   t.workpiece = frame.to_inner(position_ - length_applied_);
+  t.length_after = length_applied_;
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
     if (i < 0) continue;
     t.workpiece[i] = is_incremental(a) ? t.workpiece[i] + a.value * unit : a.value * unit;
+    t.length_after[i] = length[i];
   }
   if (polar.any()) t.workpiece = state_.polar.target(polar, state_.plane_indices(), t.workpiece);
-  t.length_after = length;
-  t.machine = frame.to_outer(t.workpiece) + length;
+  t.machine = frame.to_outer(t.workpiece) + t.length_after;
   return t;
 }
 

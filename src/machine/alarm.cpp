@@ -21,7 +21,7 @@ Alarm make_alarm(int number, const std::string& detail, SourceLocation where, st
   Alarm a;
   a.number = number;
   const AlarmInfo* info = find_alarm(number);
-  a.severity = info ? info->severity : Severity::Alarm;
+  a.severity = info ? info->severity : Severity::Alarm;  // Diagnostics::warn makes it a warning
   // 60000..69999: cycle and user alarms raised by the program with SETAL.
   a.text = info ? info->text : (number >= 60000 && number <= 69999) ? "Cycle alarm (SETAL)" : "Unknown alarm";
   if (!detail.empty()) a.text += ": " + detail;

@@ -216,7 +216,8 @@ class ProgramLoader::BlockBuilder {
       call_args_.push_back(l_.call_argument(l_.parsed_.pool.args[item.arg_first + k]));
   }
 
-  // SETAL(n[, "text"]): a cycle or user alarm; the control stops the program with it.
+  // SETAL(n[, "text"]): a cycle or user alarm. 62000..62999 are display alarms: shown, and the
+  // program goes on (a warning here); the others stop the program (Cycles manual, "Alarms").
   void set_alarm(const Item& item) {
     if (item.arg_count < 1) throw LineError(12080, item.column, "SETAL needs an alarm number");
     const double n = l_.eval(l_.parsed_.pool.args[item.arg_first]);
@@ -226,6 +227,10 @@ class ProgramLoader::BlockBuilder {
     if (item.arg_count > 1) {
       const ExprIndex t = l_.parsed_.pool.args[item.arg_first + 1];
       if (t != kNoExpr) text = as_text(l_.eval_value(t));
+    }
+    if (n >= 62000 && n <= 62999) {
+      l_.warn(static_cast<int>(n), text, item.column);
+      return;
     }
     throw LineError(static_cast<int>(n), item.column, text);
   }

@@ -25,7 +25,7 @@ constexpr std::array kCommands{
     CommandEntry{"ENAT", M},    CommandEntry{"ETAN", M},    CommandEntry{"SOFT", M},
     CommandEntry{"BRISK", M},   CommandEntry{"NORM", M},    CommandEntry{"KONT", M},
     CommandEntry{"CDON", M},    CommandEntry{"CDOF", M},    CommandEntry{"TRANS", M},
-    CommandEntry{"ATRANS", M},  CommandEntry{"SPLINEPATH", M}, CommandEntry{"CYCLE832", M},
+    CommandEntry{"ATRANS", M},  CommandEntry{"SPLINEPATH", M},
     CommandEntry{"MSG", M},     CommandEntry{"RET", M},
     CommandEntry{"POLY", M},
     // Valid on the control, not modelled by drycut.
@@ -46,9 +46,7 @@ constexpr std::array kCommands{
     CommandEntry{"FCUB", N},    CommandEntry{"TCARR", N},   CommandEntry{"TCOABS", N},
     CommandEntry{"TCOFR", N},   CommandEntry{"CPRECON", N}, CommandEntry{"CPRECOF", N},
     CommandEntry{"SOFTA", N},   CommandEntry{"BRISKA", N},  
-    CommandEntry{"WORKPIECE", N}, CommandEntry{"POCKET3", N}, CommandEntry{"POCKET4", N},
-    CommandEntry{"SLOT1", N},   CommandEntry{"SLOT2", N},   CommandEntry{"LONGHOLE", N},
-    CommandEntry{"HOLES1", N},  CommandEntry{"HOLES2", N},  CommandEntry{"MCALL", N},
+    CommandEntry{"WORKPIECE", N}, CommandEntry{"MCALL", N},
     CommandEntry{"DISCL", N},
     CommandEntry{"EXTCALL", N}, CommandEntry{"PCALL", N},
     CommandEntry{"POS", N},     CommandEntry{"POSA", N},    CommandEntry{"SPOSA", N},
@@ -129,8 +127,8 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 Support command_support(std::string_view name) {
   for (const auto& c : kCommands)
     if (c.name == name) return c.support;
-  // Standard and manufacturer cycles CYCLE81, CYCLE800 ...: valid, not modelled.
-  if (name.size() > 5 && name.substr(0, 5) == "CYCLE" && all_digits(name.substr(5))) return N;
+  // Standard cycles (CYCLE81, CYCLE800, POCKET3 ...) are not here: they are subprogram calls,
+  // found in the user's folders first, then in drycut's own NC cycles (programs/cycles).
   return Support::Unknown;
 }
 

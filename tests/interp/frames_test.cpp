@@ -137,15 +137,16 @@ TEST(Frames, RplTurnsAboutTheNormalOfTheActivePlane) {
 TEST(Frames, MirrorReversesCirclesAndCompensationSide) {
   // MIRROR X0: G0 X10 Y0 -> (-10, 0). G2 to (0, -10) about the workpiece zero is clockwise in
   // the program; on the machine it runs from (-10, 0) to (0, -10) through (-7.07, -7.07), i.e.
-  // counter-clockwise (G3). G41 acts on the machine as G42.
+  // counter-clockwise (G3). G41 acts on the machine as G42. The test tool is 50 long: the
+  // carrier (what the elements give) stands at Z50 above the tip at Z0.
   auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG0 X10 Y0\nG41 G2 X0 Y-10 I-10 J0 F100\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   auto m = r->sink.motions();
   ASSERT_EQ(m.size(), 3u);
-  EXPECT_TRUE(near(m[1].curve->end(), Vector3d(-10, 0, 0)));
+  EXPECT_TRUE(near(m[1].curve->end(), Vector3d(-10, 0, 50)));
   const double h = 10 / std::sqrt(2.0);
-  EXPECT_TRUE(near(m[2].curve->at(m[2].curve->length() / 2).position, Vector3d(-h, -h, 0)));
-  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(0, -10, 0)));
+  EXPECT_TRUE(near(m[2].curve->at(m[2].curve->length() / 2).position, Vector3d(-h, -h, 50)));
+  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(0, -10, 50)));
   const auto* arc = dynamic_cast<const geometry::ArcCurve*>(m[2].curve.get());
   ASSERT_NE(arc, nullptr);
   EXPECT_GT(arc->sweep() * arc->normal().z(), 0.0);  // counter-clockwise seen from +Z
@@ -153,11 +154,12 @@ TEST(Frames, MirrorReversesCirclesAndCompensationSide) {
 }
 
 TEST(Frames, MirrorOfThePlaneNormalKeepsTheSide) {
-  // MIRROR Z0 in G17 does not mirror the X/Y contour: G41 stays left; Z10 -> Z-10.
+  // MIRROR Z0 in G17 does not mirror the X/Y contour: G41 stays left; Z10 -> tip Z-10, the
+  // carrier of the 50 mm test tool at Z40.
   auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR Z0\nG41 G1 X10 Y0 Z10 F100\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   auto m = r->sink.motions();
-  EXPECT_TRUE(near(m[1].curve->end(), Vector3d(10, 0, -10)));
+  EXPECT_TRUE(near(m[1].curve->end(), Vector3d(10, 0, 40)));
   EXPECT_EQ(m[1].compensation.side, CompensationSide::Left);
 }
 
@@ -277,12 +279,12 @@ std::vector<PathElement> tool_centre_path(const std::string& text) {
 TEST(Frames, MirroredContourIsCompensatedOnTheMirroredSide) {
   // The square (0,0) (10,0) (10,10) (0,10) with G41 (inside, r = 2) under MIRROR X0 is the square
   // x in [-10, 0] on the machine; the tool centre runs inside it: x = -8 on the second side,
-  // y = 8 on the third.
+  // y = 8 on the third (the carrier of the 50 mm test tool at Z50).
   auto m = tool_centre_path("T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG41 G1 X10 Y0 F100\nY10\nX0\nG40 X0 Y20\nM30\n");
   ASSERT_GE(m.size(), 4u);
-  EXPECT_TRUE(near(m[2].curve->start(), Vector3d(-8, 0, 0), 1e-6));  // NORM: the approach ends normal to the next side
-  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(-8, 8, 0), 1e-6));
-  EXPECT_TRUE(near(m[3].curve->end(), Vector3d(0, 8, 0), 1e-6));
+  EXPECT_TRUE(near(m[2].curve->start(), Vector3d(-8, 0, 50), 1e-6));  // NORM: the approach ends normal to the next side
+  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(-8, 8, 50), 1e-6));
+  EXPECT_TRUE(near(m[3].curve->end(), Vector3d(0, 8, 50), 1e-6));
 }
 
 }  // namespace

@@ -73,19 +73,17 @@ TEST_F(Loader, EmitsEvaluatedBlocksWithLocation) {
 }
 
 TEST_F(Loader, CommandsToolNamesAndArguments) {
-  const auto b = run("T=\"Fr_4\" D1\nASPLINE BTAN CYCLE832(0.01,1) MSG(\"Go\") SPLINEPATH(1,X,Y)\nM30\n");
+  const auto b = run("T=\"Fr_4\" D1\nASPLINE BTAN MSG(\"Go\") SPLINEPATH(1,X,Y)\nM30\n");
   ASSERT_EQ(b.size(), 3u);
   EXPECT_EQ(*b[0].tool_name, "Fr_4");
-  ASSERT_EQ(b[1].commands.size(), 5u);
-  const auto* cyc = b[1].find_command("CYCLE832");
-  ASSERT_TRUE(cyc);
-  EXPECT_DOUBLE_EQ(std::get<double>(cyc->args[0]), 0.01);
+  ASSERT_EQ(b[1].commands.size(), 4u);
+  EXPECT_DOUBLE_EQ(std::get<double>(b[1].find_command("SPLINEPATH")->args[0]), 1.0);
   EXPECT_EQ(std::get<std::string>(b[1].find_command("MSG")->args[0]), "Go");
   EXPECT_EQ(std::get<std::string>(b[1].find_command("SPLINEPATH")->args[2]), "Y");
 }
 
 TEST_F(Loader, NotModelledCommandWarnsAndIsDropped) {
-  const auto b = run("G1 X1 F100 TRAORI\nCYCLE81(10,0,2,-5)\nM30\n");
+  const auto b = run("G1 X1 F100 TRAORI\nWORKPIECE(,,,\"BOX\",0,0,-50)\nM30\n");
   ASSERT_EQ(b.size(), 2u);
   EXPECT_TRUE(b[0].commands.empty());
   ASSERT_EQ(diagnostics_.items().size(), 2u);
@@ -93,6 +91,20 @@ TEST_F(Loader, NotModelledCommandWarnsAndIsDropped) {
   EXPECT_EQ(diagnostics_.items()[0].where.line, 1u);
   EXPECT_EQ(diagnostics_.items()[0].where.column, 12u);
   EXPECT_EQ(diagnostics_.items()[1].where.line, 2u);
+}
+
+// Standard cycles are ordinary subprogram calls: the first folder of the search path that
+// holds CYCLE81.SPF wins (drycut's own cycles come last, the user's folders first).
+TEST_F(Loader, StandardCycleIsASubprogramCall) {
+  fs::create_directories(dir_ / "user");
+  write("user/CYCLE81.SPF", "PROC CYCLE81(REAL RTP, REAL RFP, REAL SDIS, REAL DP)\nG1 Z=DP\nM17\n");
+  write("lib/CYCLE81.SPF", "PROC CYCLE81(REAL RTP, REAL RFP, REAL SDIS, REAL DP)\nG1 Z=RTP\nM17\n");
+  LoaderOptions options;
+  options.search_path.push_back(dir_ / "user");  // run() appends lib (the "shipped" one) after it
+  std::vector<Block> b = run("G1 X1 F100\nCYCLE81(10,0,2,-5)\nM30\n", options);
+  ASSERT_EQ(b.size(), 4u);  // G1 X1, the cycle's G1 Z, its M17, M30
+  EXPECT_DOUBLE_EQ(b[1].find_address("Z")->value, -5.0);
+  EXPECT_TRUE(diagnostics_.items().empty());
 }
 
 TEST_F(Loader, SubprogramByEveryNameFormAndCase) {

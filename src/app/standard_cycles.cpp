@@ -1,0 +1,44 @@
+#include "app/standard_cycles.hpp"
+
+#include <string>
+#include <system_error>
+
+namespace drycut::app {
+namespace {
+
+bool is_folder(const std::filesystem::path& p) {
+  std::error_code ec;
+  return std::filesystem::is_directory(p, ec);
+}
+
+// The folder of the running binary (Linux: /proc/self/exe); empty when it cannot be read.
+std::filesystem::path binary_folder() {
+  std::error_code ec;
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  return exe.parent_path();
+}
+
+}  // namespace
+
+std::optional<std::filesystem::path> standard_cycles_folder() {
+  const auto bin = binary_folder();
+  if (!bin.empty()) {
+    if (is_folder(bin / "cycles")) return bin / "cycles";
+    if (is_folder(bin / ".." / "share" / "drycut" / "cycles")) return (bin / ".." / "share" / "drycut" / "cycles").lexically_normal();
+  }
+#ifdef DRYCUT_SOURCE_CYCLES_DIR
+  if (is_folder(DRYCUT_SOURCE_CYCLES_DIR)) return std::filesystem::path(DRYCUT_SOURCE_CYCLES_DIR);
+#endif
+  return std::nullopt;
+}
+
+std::vector<std::filesystem::path> search_path_with_cycles(const std::vector<std::string>& user_folders,
+                                                           bool use_standard) {
+  std::vector<std::filesystem::path> dirs(user_folders.begin(), user_folders.end());
+  if (use_standard)
+    if (auto cycles = standard_cycles_folder()) dirs.push_back(*cycles);
+  return dirs;
+}
+
+}  // namespace drycut::app

@@ -1,0 +1,22 @@
+#pragma once
+// Where drycut's own standard cycles are: NC subprograms (CYCLE81.SPF, CYCLE800.SPF, ...) from
+// programs/cycles, installed beside the binary. They are searched after the user's folders, so a
+// machine's own cycle (e.g. from a controller archive) with the same name is used instead.
+//
+// Lookup order: <bindir>/cycles (the build tree, where CMake copies them), then
+// <bindir>/../share/drycut/cycles (an installed drycut), then the source tree's programs/cycles
+// (DRYCUT_SOURCE_CYCLES_DIR, a compile definition). The first folder that exists wins.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace drycut::app {
+
+std::optional<std::filesystem::path> standard_cycles_folder();
+
+// The user's folders followed by the standard cycles folder (when found and `use_standard`).
+std::vector<std::filesystem::path> search_path_with_cycles(const std::vector<std::string>& user_folders,
+                                                           bool use_standard);
+
+}  // namespace drycut::app
