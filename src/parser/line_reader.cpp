@@ -1,9 +1,11 @@
 #include "parser/line_reader.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 
 namespace drycut::parser {
@@ -11,6 +13,8 @@ namespace drycut::parser {
 namespace {
 constexpr size_t kBufferSize = 256 * 1024;
 static_assert(kBufferSize > LineReader::kMaxLineLength);
+// Files up to this size are read once and kept: jumps and loops then cost no system call.
+constexpr off_t kWholeFileLimit = 16 * 1024 * 1024;
 }  // namespace
 
 LineReader::~LineReader() {
@@ -21,12 +25,37 @@ bool LineReader::open(const std::filesystem::path& path) {
   if (fd_ >= 0) ::close(fd_);
   fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd_ < 0) return false;
+  whole_file_ = false;
+  struct stat st {};
+  if (::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode) && st.st_size <= kWholeFileLimit) {
+    buffer_.resize(static_cast<size_t>(st.st_size));
+    size_t got = 0;
+    while (got < buffer_.size()) {
+      const ssize_t n = ::read(fd_, buffer_.data() + got, buffer_.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<size_t>(n);
+    }
+    if (got == buffer_.size()) {
+      whole_file_ = true;
+      seek(LinePosition{});
+      return true;
+    }
+  }
   buffer_.resize(kBufferSize);
   seek(LinePosition{});
   return true;
 }
 
 void LineReader::seek(const LinePosition& position) {
+  next_position_ = position;
+  if (whole_file_) {
+    buffer_file_offset_ = 0;
+    end_ = buffer_.size();
+    begin_ = static_cast<size_t>(std::min<uint64_t>(position.offset, end_));
+    eof_ = true;  // nothing more to read: it is all in the buffer
+    return;
+  }
   begin_ = end_ = 0;
   eof_ = false;
   buffer_file_offset_ = position.offset;
@@ -63,6 +92,15 @@ bool LineReader::next(RawLine& out) {
   for (;;) {
     const char* nl = static_cast<const char*>(
         std::memchr(buffer_.data() + scanned, '\n', end_ - scanned));
+    if (nl && static_cast<size_t>(nl - buffer_.data()) - begin_ > kMaxLineLength) {
+      // A whole-file buffer holds the long line: report it as the streaming reader does.
+      out.too_long = true;
+      out.bytes = std::string_view();
+      begin_ = static_cast<size_t>(nl - buffer_.data()) + 1;
+      next_position_.offset = buffer_file_offset_ + begin_;
+      ++next_position_.line;
+      return true;
+    }
     if (nl) {
       const size_t line_end = static_cast<size_t>(nl - buffer_.data());
       size_t len = line_end - begin_;

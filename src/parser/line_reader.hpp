@@ -1,7 +1,8 @@
 #pragma once
 // Streams a program file line by line with a fixed buffer, so a 400 MB program costs no more
 // memory than a small one. Every line knows its byte offset, which is what backward jumps and
-// loops seek to.
+// loops seek to. A file of at most 16 MiB is read whole once: seeking in it (every loop
+// iteration) is then a pointer move, not a system call.
 #include <cstdint>
 #include <filesystem>
 #include <string_view>
@@ -49,6 +50,7 @@ class LineReader {
   size_t end_ = 0;    // one past the last valid byte
   uint64_t buffer_file_offset_ = 0;  // file offset of buffer_[0]
   bool eof_ = false;
+  bool whole_file_ = false;  // the whole file is in buffer_
   bool read_error_ = false;
   LinePosition next_position_;
 };

@@ -67,6 +67,7 @@ void ProgramLoader::execute_control() {
       const LinePosition head = stack.back().head;
       stack.pop_back();
       f.reader.seek(head);  // the WHILE line evaluates its condition again
+      check_endless_loop();
       return;
     }
     case Statement::For: {
@@ -100,7 +101,7 @@ void ProgramLoader::execute_control() {
         value = r_parameters_[static_cast<size_t>(index)] += 1.0;
       }
       if (value <= top.end)
-        f.reader.seek(top.body);
+        f.reader.seek(top.body);  // the variable changed: never the same state
       else
         stack.pop_back();
       return;
@@ -111,14 +112,17 @@ void ProgramLoader::execute_control() {
       return;
     case Statement::Until:
       expect_top(Statement::Repeat);
-      if (eval(parsed_.condition) == 0.0)
+      if (eval(parsed_.condition) == 0.0) {
         f.reader.seek(stack.back().body);
-      else
+        check_endless_loop();
+      } else {
         stack.pop_back();
+      }
       return;
     case Statement::EndLoop:
       expect_top(Statement::Loop);
       f.reader.seek(stack.back().body);
+      check_endless_loop();
       return;
     default:
       return;
@@ -239,6 +243,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       auto& stack = f.control;
       while (!stack.empty() && stack.back().head.line >= found->line) stack.pop_back();
       f.reader.seek(*found);
+      check_endless_loop();
       return;
     }
   }
@@ -348,11 +353,44 @@ void ProgramLoader::execute_repeat_section() {
   f.reader.seek(r.start);
 }
 
+void ProgramLoader::loop_state(std::string& out) const {
+  out.clear();
+  auto put = [&out](const auto& v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  for (const auto& frame : frames_) {
+    put(frame->file.get());
+    put(frame->reader.tell().offset);
+    put(frame->passes_left);
+    for (const auto& c : frame->control) {
+      put(c.head.offset);
+      put(c.end);
+    }
+    for (const auto& r : frame->repeats) put(r.remaining);
+    frame->locals.append_state(out);
+  }
+  size_t n = r_parameters_.size();
+  while (n > 0 && r_parameters_[n - 1] == 0.0) --n;
+  put(n);
+  out.append(reinterpret_cast<const char*>(r_parameters_.data()), n * sizeof(double));
+  globals_.append_state(out);
+  system_variables_.append_state(out);
+  put(macros_.size());
+}
+
+void ProgramLoader::check_endless_loop() {
+  const Frame& f = *frames_.back();
+  // The site: where the jump goes, in which program at which depth.
+  const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
+  loop_state(loop_state_);
+  if (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads()))
+    raise(990004, "endless loop: the program comes back to line " + std::to_string(f.reader.tell().line) +
+                      " with every variable unchanged", 0);
+}
+
 bool ProgramLoader::end_of_repeat_section(Frame& f) {
   RepeatSection& r = f.repeats.back();
   if (position_.offset != r.stop_offset) return false;
   if (r.remaining > 0) {
-    --r.remaining;
+    --r.remaining;  // the count changed: never the same state
     f.reader.seek(r.start);
   } else {
     f.reader.seek(r.resume);

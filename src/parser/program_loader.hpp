@@ -8,7 +8,8 @@
 //   program_loader.cpp        reading lines, the call stack (calls, passes, returns), alarms
 //   loader_scope.cpp          names: variables, R parameters, $ system variables, axis names
 //   loader_definitions.cpp    DEF, PROC parameters, definition files (GUD/MAC), DEFINE macros
-//   loader_control_flow.cpp   IF/WHILE/FOR/REPEAT/LOOP, GOTO*, CASE, REPEAT sections
+//   loader_control_flow.cpp   IF/WHILE/FOR/REPEAT/LOOP, GOTO*, CASE, REPEAT sections,
+//                             endless loops (loop_guard.hpp)
 //   block_builder.cpp         the words of an ordinary block -> Block
 #include <array>
 #include <bitset>
@@ -24,6 +25,7 @@
 #include "parser/block.hpp"
 #include "parser/line_parser.hpp"
 #include "parser/line_reader.hpp"
+#include "parser/loop_guard.hpp"
 #include "parser/parsed_line.hpp"
 #include "parser/program_files.hpp"
 #include "parser/system_variables.hpp"
@@ -120,6 +122,9 @@ class ProgramLoader {
   void execute_case();
   void execute_repeat_section();
   bool end_of_repeat_section(Frame& f);
+  // At every backward jump: alarm 990004 when the loader is back in a state it had here.
+  void check_endless_loop();
+  void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
   std::optional<LinePosition> find_label_position(const std::string& label, bool forward_first);
@@ -135,6 +140,8 @@ class ProgramLoader {
   VariableTable globals_;  // GUD: definition files
   SystemVariables system_variables_;
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
+  LoopGuard loop_guard_;
+  std::string loop_state_;  // reused buffer
 
   LineParser parser_;
   ParsedLine parsed_;

@@ -54,10 +54,13 @@ std::string system_variable_key(std::string_view upper_name, std::span<const Val
 SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::span<const Value> indices) const {
   const std::string key = system_variable_key(name, indices);
   if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
+  if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
   if (auto it = values_.find(key); it != values_.end()) return {Value(it->second), false};
   const SystemVariableClass c = classify_system_variable(name);
-  if (view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData))
+  if (view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) {
+    ++view_reads_;
     if (auto v = view_->read_system_variable(name, indices)) return {*v, false};
+  }
   if (c == SystemVariableClass::InputOutput) return {Value(0.0), false};
   // Without the interpreter (`check`) state reads 0 silently: values matter only to `run`.
   if (!view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) return {Value(0.0), false};
@@ -68,10 +71,23 @@ void SystemVariables::write(std::string_view name, std::span<const Value> indice
   std::string key = system_variable_key(name, indices);
   if (v.is_number()) {
     texts_.erase(key);
-    values_[std::move(key)] = v.number;
+    written_[std::move(key)] = v.number;
   } else {
-    values_.erase(key);
+    written_.erase(key);
     texts_[std::move(key)] = v.text;
+  }
+}
+
+void SystemVariables::append_state(std::string& out) const {
+  for (const auto& [k, v] : written_) {
+    out += k;
+    out.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  for (const auto& [k, v] : texts_) {
+    out += k;
+    out += '=';
+    out += v;
+    out += '\0';
   }
 }
 

@@ -54,11 +54,17 @@ class SystemVariables {
   ReadResult read(std::string_view upper_name, std::span<const Value> indices) const;
   void write(std::string_view upper_name, std::span<const Value> indices, const Value& v);
   bool is_known(std::string_view upper_name) const;
+  // The written values as bytes (the loop guard's state).
+  void append_state(std::string& out) const;
+  // How many values were read from the interpreter so far.
+  uint64_t view_reads() const { return view_reads_; }
 
  private:
-  MachineDataMap values_;                         // numbers: machine data, I/O, written values
-  std::map<std::string, std::string, std::less<>> texts_;  // written strings
+  MachineDataMap values_;                                   // machine data, I/O (from the profile)
+  MachineDataMap written_;                                  // numbers written by the program
+  std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
   const ControllerStateView* view_ = nullptr;
+  mutable uint64_t view_reads_ = 0;
 };
 
 }  // namespace drycut::parser

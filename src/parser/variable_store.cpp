@@ -21,6 +21,15 @@ void Variable::reset() {
     texts_.assign(size(), std::string());
 }
 
+void Variable::append_state(std::string& out) const {
+  if (ref_ || ref_number_) return;  // the target is appended where it lives
+  out.append(reinterpret_cast<const char*>(numbers_.data()), numbers_.size() * sizeof(double));
+  for (const auto& t : texts_) {
+    out += t;
+    out += '\0';
+  }
+}
+
 size_t Variable::element(std::span<const Value> indices, uint32_t column) const {
   if (ref_) {
     if (indices.empty() && rank_ == 0) return ref_offset_;

@@ -38,6 +38,8 @@ class Variable {
   void set(size_t element, const Value& v, uint32_t column);
   // Every element back to its type's zero (a DEF executed again, a new subprogram pass).
   void reset();
+  // Appends the values (not a reference's target) as bytes: the loop guard's state.
+  void append_state(std::string& out) const;
 
   // Makes this variable an alias of `target` (element `offset` for a scalar reference), or of a
   // number outside the store (an R parameter).
@@ -67,6 +69,9 @@ class VariableTable {
   const Variable* find(std::string_view upper_name) const;
   Variable& add(Variable v) { return vars_.emplace_back(std::move(v)); }
   void clear() { vars_.clear(); }
+  void append_state(std::string& out) const {
+    for (const auto& v : vars_) v.append_state(out);
+  }
   bool empty() const { return vars_.empty(); }
 
  private:

@@ -1,0 +1,22 @@
+#include "parser/loop_guard.hpp"
+
+namespace drycut::parser {
+
+bool LoopGuard::repeats(uint64_t site, const std::string& state, uint64_t reads) {
+  constexpr size_t kMaxSites = 4096;  // bounded memory for programs with very many loops
+  auto it = sites_.find(site);
+  if (it == sites_.end()) {
+    if (sites_.size() >= kMaxSites) return false;
+    it = sites_.emplace(site, Record{}).first;
+  }
+  Record& r = it->second;
+  if (r.visits > 0 && r.reads == reads && r.state == state) return true;
+  if (++r.visits == r.next_save) {
+    r.state = state;
+    r.reads = reads;
+    r.next_save *= 2;
+  }
+  return false;
+}
+
+}  // namespace drycut::parser

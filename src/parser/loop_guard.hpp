@@ -1,0 +1,36 @@
+#pragma once
+// Finds endless loops without running them to the step limit. Only a backward jump (GOTOB,
+// GOTO/GOTOC backwards, ENDWHILE, ENDFOR, UNTIL, ENDLOOP, a REPEAT section) can make a program
+// run forever, and the loader's future depends only on its own state (position, call stack,
+// open structures, variables, R parameters, written system variables) and on what it reads of
+// the interpreter's state. So when a backward jump arrives at the same place with the same
+// loader state, and nothing was read from the interpreter in between, the program repeats
+// itself for ever: that is reported at once (alarm 990004) instead of after 10^8 lines.
+//
+// Algorithm (Brent's cycle detection, per jump site): every visit compares the state with the
+// one saved at that site; the saved state is renewed at the 1st, 2nd, 4th, 8th ... visit, so a
+// cycle of any length L through the site is found within about 2L visits, with one saved state
+// per site. States are compared byte for byte (no hash collisions).
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+
+namespace drycut::parser {
+
+class LoopGuard {
+ public:
+  // True when `state` at `site` equals the saved one and no interpreter state was read since
+  // (`reads` is a running count of such reads).
+  bool repeats(uint64_t site, const std::string& state, uint64_t reads);
+
+ private:
+  struct Record {
+    std::string state;
+    uint64_t reads = 0;
+    uint64_t visits = 0;
+    uint64_t next_save = 1;
+  };
+  std::unordered_map<uint64_t, Record> sites_;
+};
+
+}  // namespace drycut::parser
