@@ -89,5 +89,18 @@ TEST_F(LoaderLanguage, RepeatSectionRunsPMoreTimes) {
   EXPECT_EQ(x, (std::vector<double>{1, 2, 3}));
 }
 
+// Job Planning, "Indirect subprogram call (CALL)": the name may come from a STRING variable.
+TEST_F(LoaderLanguage, CallTakesTheNameFromAStringVariable) {
+  std::ofstream(dir_ / "SUB_B.SPF", std::ios::binary) << "PROC SUB_B\nX7\nM17\n";
+  EXPECT_EQ(xs("DEF STRING[10] PN=\"SUB_B\"\nCALL PN\nM30\n"), std::vector<double>{7});
+}
+
+// More call arguments than PROC parameters: alarm 12340.
+TEST_F(LoaderLanguage, TooManyArgumentsAreRefused) {
+  std::ofstream(dir_ / "SUB_C.SPF", std::ios::binary) << "PROC SUB_C(REAL PA)\nX=PA\nM17\n";
+  EXPECT_EQ(xs("SUB_C(4)\nM30\n"), std::vector<double>{4});
+  EXPECT_EQ(alarm_of("SUB_C(4, 5)\nM30\n"), 12340);
+}
+
 }  // namespace
 }  // namespace drycut::parser
