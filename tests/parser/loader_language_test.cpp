@@ -78,7 +78,7 @@ TEST_F(LoaderLanguage, StringToBool) {
 
 // Job Planning, "Program branches (CASE ... OF ... DEFAULT ...)".
 TEST_F(LoaderLanguage, CaseJumpsToTheMatchingLabelOrDefault) {
-  const std::string body = "CASE(R1) OF 1 GOTOF L1 2 GOTOF L2 DEFAULT GOTOF LD\nL1: X1\nGOTOF E\nL2: X2\nGOTOF E\nLD: X9\nE: M30\n";
+  const std::string body = "CASE(R1) OF 1 GOTOF LA1 2 GOTOF LA2 DEFAULT GOTOF LD\nLA1: X1\nGOTOF EE\nLA2: X2\nGOTOF EE\nLD: X9\nEE: M30\n";
   EXPECT_EQ(xs("R1=2\n" + body), std::vector<double>{2});
   EXPECT_EQ(xs("R1=7\n" + body), std::vector<double>{9});
 }
