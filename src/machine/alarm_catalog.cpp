@@ -25,6 +25,7 @@ constexpr std::array kCatalog{
     AlarmInfo{12150, S::Alarm, "Operation not compatible with data type", A::ThirdParty},
     AlarmInfo{12160, S::Alarm, "Value outside range", A::ThirdParty},
     AlarmInfo{12170, S::Alarm, "Name defined several times", A::ThirdParty},
+    AlarmInfo{12340, S::Alarm, "Number of parameters too high", A::Memory},  // more call arguments than PROC parameters
     AlarmInfo{12410, S::Alarm, "Wrong index type", A::ThirdParty},
     AlarmInfo{12430, S::Alarm, "Index invalid", A::ThirdParty},
     AlarmInfo{12470, S::Alarm, "G function unknown", A::ThirdParty},

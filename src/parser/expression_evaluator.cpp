@@ -100,7 +100,13 @@ class Evaluator {
   }
 
   bool compare(const ExprNode& n) const {
-    const Value a = eval(n.a), b = eval(n.b);
+    Value a = eval(n.a), b = eval(n.b);
+    // A CHAR is a number (its code); compared with a one-character string it compares codes.
+    auto one_char_code = [](Value& v) {
+      if (v.is_text() && v.text.size() == 1) v = Value(static_cast<unsigned char>(v.text[0]));
+    };
+    if (a.is_number() && b.is_text()) one_char_code(b);
+    if (b.is_number() && a.is_text()) one_char_code(a);
     if (!a.is_number() || !b.is_number()) {
       if (a.is_number() != b.is_number())
         throw LineError(12150, n.column, "a string compared with a number");
@@ -143,6 +149,8 @@ class Evaluator {
       case Function::AbsoluteMode: case Function::IncrementalMode: case Function::DirectMode:
       case Function::AbsolutePositive: case Function::AbsoluteNegative:
         throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an address");
+      case Function::ArraySet: case Function::ArrayRep:
+        throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an array element");
       default: return Value(arithmetic(n));
     }
   }

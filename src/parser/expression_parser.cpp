@@ -24,7 +24,9 @@ long r_parameter_index(std::string_view name) {
 }  // namespace
 
 bool is_expression_keyword(std::string_view name) {
-  if (find_function(name)) return true;
+  // SET and REP are only value lists of array assignments: elsewhere they stay free names.
+  if (const FunctionInfo* f = find_function(name))
+    return f->func != Function::ArraySet && f->func != Function::ArrayRep;
   for (auto w : kOperatorWords)
     if (w == name) return true;
   return false;

@@ -50,6 +50,8 @@ constexpr std::array kFunctions{
     FunctionInfo{"DC", F::DirectMode, 1, 1, "rotary axis to an absolute position the shortest way"},
     FunctionInfo{"ACP", F::AbsolutePositive, 1, 1, "rotary axis to an absolute position in positive direction"},
     FunctionInfo{"ACN", F::AbsoluteNegative, 1, 1, "rotary axis to an absolute position in negative direction"},
+    FunctionInfo{"SET", F::ArraySet, 1, 30, "NAME[i]=SET(a, b, ...): values for consecutive array elements from i"},
+    FunctionInfo{"REP", F::ArrayRep, 1, 1, "NAME[i]=REP(v): v for element i and every element after it"},
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "parser/lexer.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdint>
 #include <string>
@@ -25,17 +26,35 @@ std::string describe_char(char c) {
   return buf;
 }
 
-// Scans digits [. digits] starting at i; returns the end. Column used for errors only.
+// Scans digits [. digits] [EX [+|-] digits] starting at i; returns the end. EX is the power
+// of ten (PGA Fundamentals, "Arithmetic parameters": R1=1.874EX8 is 187400000).
 size_t scan_number(std::string_view s, size_t i) {
   while (i < s.size() && is_digit(s[i])) ++i;
   if (i < s.size() && s[i] == '.') {
     ++i;
     while (i < s.size() && is_digit(s[i])) ++i;
   }
+  if (i + 2 < s.size() && s[i] == 'E' && s[i + 1] == 'X') {
+    size_t j = i + 2;
+    if (s[j] == '+' || s[j] == '-') ++j;
+    if (j < s.size() && is_digit(s[j])) {
+      while (j < s.size() && is_digit(s[j])) ++j;
+      i = j;
+    }
+  }
   return i;
 }
 
 double to_double(std::string_view text, uint32_t column) {
+  if (const size_t ex = text.find("EX"); ex != std::string_view::npos) {  // mantissa EX exponent
+    const double mantissa = to_double(text.substr(0, ex), column);
+    const std::string_view power = text.substr(ex + 2);
+    int e = 0;
+    const bool negative = power.front() == '-';
+    const std::string_view digits = power.substr(power.front() == '+' || negative ? 1 : 0);
+    std::from_chars(digits.data(), digits.data() + digits.size(), e);
+    return mantissa * std::pow(10.0, negative ? -e : e);
+  }
   double v = 0.0;
   // "5." is valid NC: from_chars stops before a lone trailing dot, so parse without it.
   std::string_view digits = text;

@@ -83,6 +83,9 @@ void ProgramLoader::execute_proc() {
   // Binds the call's arguments to the parameters: by value (converted to the parameter's type),
   // or VAR by reference (the parameter aliases the caller's variable, element or R parameter).
   Frame& f = *frames_.back();
+  if (f.args.size() > parsed_.defs.size())  // reported at the PROC line, where they are bound
+    throw LineError(12340, parsed_.statement_column, std::to_string(f.args.size()) + " arguments for " +
+                                                         std::to_string(parsed_.defs.size()) + " parameters");
   for (size_t i = 0; i < parsed_.defs.size(); ++i) {
     const DefEntry& d = parsed_.defs[i];
     if (f.locals.find(d.name)) continue;  // a new pass binds again only what is new

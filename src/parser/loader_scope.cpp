@@ -16,6 +16,20 @@ bool all_digits(std::string_view s) {
   return std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
+// A STRING scalar with one index, NAME[i], is its character at position i counted from 0
+// (PGA Job Planning, "Read and write individual characters"); i must lie inside the text.
+bool is_character_access(const Variable& v, size_t index_count) {
+  return v.type() == DataType::String && v.rank() == 0 && index_count == 1;
+}
+
+size_t character_position(const std::string& text, const Value& index, uint32_t column) {
+  if (!index.is_number()) throw LineError(12150, column, "a character index must be a number");
+  const double i = index.number;
+  if (!(i >= 0 && i < static_cast<double>(text.size())) || i != std::trunc(i))
+    throw LineError(17020, column, "character index " + number_to_text(i) + " outside the string");
+  return static_cast<size_t>(i);
+}
+
 }  // namespace
 
 Variable* ProgramLoader::find_variable(std::string_view name) {
@@ -45,7 +59,13 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
              column);
     return r.value;
   }
-  if (const Variable* v = l.find_variable(name)) return v->get(v->element(indices, column));
+  if (const Variable* v = l.find_variable(name)) {
+    if (is_character_access(*v, indices.size())) {
+      const std::string text = v->get(v->element({}, column)).text;
+      return Value::of_text(std::string(1, text[character_position(text, indices[0], column)]));
+    }
+    return v->get(v->element(indices, column));
+  }
   if (indices.empty()) {
     if (name == "TRUE") return Value(1.0);
     if (name == "FALSE") return Value(0.0);
@@ -91,7 +111,28 @@ void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t 
                                     uint32_t column) {
   Value idx[3];
   for (uint32_t k = 0; k < index_count && k < 3; ++k) idx[k] = eval_value(parsed_.pool.args[index_first + k]);
+  if (is_character_access(v, index_count)) {  // NAME[i]="C": one character of a STRING
+    const size_t e = v.element({}, column);
+    std::string text = v.get(e).text;
+    const Value c = eval_value(value);
+    if (c.is_text() && c.text.size() != 1) throw LineError(12150, column, "one character expected");
+    if (!c.is_text() && !c.is_number()) throw LineError(12150, column, "one character expected");
+    text[character_position(text, idx[0], column)] = c.is_text() ? c.text[0] : static_cast<char>(c.number);
+    v.set(e, Value::of_text(text), column);
+    return;
+  }
   const size_t e = v.element(std::span<const Value>(idx, index_count), column);
+  const ExprNode& n = parsed_.pool[value];
+  if (n.op == ExprOp::Call && n.func == Function::ArraySet) {  // consecutive elements from e
+    if (e + n.b > v.size()) throw LineError(17020, column, "SET writes past the end of " + v.name());
+    for (uint32_t k = 0; k < n.b; ++k) v.set(e + k, eval_value(parsed_.pool.args[n.a + k]), column);
+    return;
+  }
+  if (n.op == ExprOp::Call && n.func == Function::ArrayRep) {  // element e and all after it
+    const Value x = eval_value(parsed_.pool.args[n.a]);
+    for (size_t k = e; k < v.size(); ++k) v.set(k, x, column);
+    return;
+  }
   v.set(e, eval_value(value), column);
 }
 

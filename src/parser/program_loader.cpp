@@ -168,7 +168,12 @@ bool ProgramLoader::execute_line(Block& out) {
         if (!parsed_.items.empty()) passes = static_cast<uint64_t>(parsed_.items.front().code);
         f.executed_block = true;
         pending_args_.clear();
-        call_program(std::string(parsed_.call_name), passes, parsed_.target.column);
+        // CALL takes the program name from a STRING variable when one has that name
+        // (PGA Job Planning, "Indirect subprogram call (CALL)").
+        std::string name(parsed_.call_name);
+        if (const Variable* v = find_variable(name); v && v->type() == DataType::String && v->rank() == 0)
+          name = v->get(v->element({}, parsed_.target.column)).text;
+        call_program(name, passes, parsed_.target.column);
         return false;
       }
       case Statement::Goto:

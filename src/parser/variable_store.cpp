@@ -95,7 +95,10 @@ void Variable::set(size_t element, const Value& v, uint32_t column) {
       numbers_[element] = x;
       return;
     }
-    case DataType::Bool: numbers_[element] = as_number(v, column) != 0.0 ? 1.0 : 0.0; return;
+    case DataType::Bool:  // a STRING is TRUE when not empty (PGA "Type conversion")
+      if (v.is_text()) numbers_[element] = v.text.empty() ? 0.0 : 1.0;
+      else numbers_[element] = as_number(v, column) != 0.0 ? 1.0 : 0.0;
+      return;
     case DataType::Real: numbers_[element] = as_number(v, column); return;
   }
 }

@@ -107,3 +107,28 @@ TEST(Expression, AlarmKnowsTheColumn) {
 
 }  // namespace
 }  // namespace drycut::parser
+
+namespace drycut::parser {
+namespace {
+
+// Job Planning, "String operations": results checked through numbers and comparisons.
+TEST(ExpressionLanguage, StringFunctionsAndConcatenation) {
+  EXPECT_DOUBLE_EQ(evaluate_expression("STRLEN(\"AB\"<<\"CDE\")", {}), 5.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("SUBSTR(\"ACKNOWLEDGE\",3,4)==\"NOWL\"", {}), 1.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("INDEX(\"ABCABC\",\"C\")+RINDEX(\"ABCABC\",\"C\")*10", {}), 52.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("MINDEX(\"ABCDEF\",\"FD\")", {}), 3.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("\"X\"<<1+2==\"X3\"", {}), 1.0);  // + before <<, << before ==
+  EXPECT_DOUBLE_EQ(evaluate_expression("TOUPPER(\"ab1\")==\"AB1\"", {}), 1.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("1.5EX2", {}), 150.0);
+}
+
+// Job Planning, "Priority of the operations": bit operators between arithmetic and logic.
+TEST(ExpressionLanguage, BitOperatorPriorities) {
+  EXPECT_DOUBLE_EQ(evaluate_expression("1 B_OR 1 B_XOR 1", {}), 1.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("6 B_AND 3+1", {}), 4.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("1 AND 2 B_AND 2", {}), 1.0);
+  EXPECT_DOUBLE_EQ(evaluate_expression("0==0 AND 0", {}), 1.0);
+}
+
+}  // namespace
+}  // namespace drycut::parser

@@ -126,3 +126,45 @@ TEST(Lexer, CompactAddressWordsSplitAtTheNextLetter) {
 
 }  // namespace
 }  // namespace drycut::parser
+
+namespace drycut::parser {
+namespace {
+
+// PGA Fundamentals, "Arithmetic parameters": EX writes a power of ten (1.874EX8, -0.1EX-5).
+TEST(LexerConformance, ExponentNotationIsOneNumber) {
+  Lexer lx;
+  std::vector<Token> t;
+  lx.tokenize("R1=1.5EX3 R2=-0.1EX-5 R3=2EX+2", t);
+  ASSERT_EQ(t.size(), 11u);
+  EXPECT_DOUBLE_EQ(t[2].number, 1500.0);
+  EXPECT_EQ(t[3].text, "R2");
+  EXPECT_DOUBLE_EQ(t[6].number, 0.1e-5);
+  EXPECT_DOUBLE_EQ(t[9].number, 200.0);
+}
+
+// EX followed by no digit is not an exponent: "2EXP" stays a number and a name.
+TEST(LexerConformance, ExWithoutDigitsIsAName) {
+  Lexer lx;
+  std::vector<Token> t;
+  lx.tokenize("X2 EXTCALL", t);
+  ASSERT_EQ(t.size(), 3u);
+  EXPECT_EQ(t[1].text, "EXTCALL");
+}
+
+// The address rule: one letter and digits is one word, so compact blocks split per word.
+TEST(LexerConformance, CompactBlockSplitsIntoWords) {
+  Lexer lx;
+  std::vector<Token> t;
+  lx.tokenize("N10G0X.5Y2S12M3", t);
+  ASSERT_EQ(t.size(), 8u);
+  EXPECT_EQ(t[0].text, "N10");
+  EXPECT_EQ(t[1].text, "G0");
+  EXPECT_EQ(t[2].text, "X");
+  EXPECT_DOUBLE_EQ(t[3].number, 0.5);
+  EXPECT_EQ(t[4].text, "Y2");
+  EXPECT_EQ(t[5].text, "S12");
+  EXPECT_EQ(t[6].text, "M3");
+}
+
+}  // namespace
+}  // namespace drycut::parser

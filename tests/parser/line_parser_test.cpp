@@ -151,3 +151,63 @@ TEST(LineParser, SyntaxErrors) {
 
 }  // namespace
 }  // namespace drycut::parser
+
+namespace drycut::parser {
+namespace {
+
+// Job Planning, "Definition and initialization of array variables": dimensions and value lists.
+TEST(LineParserLanguage, DefArrayWithSetAndRep) {
+  LineParser parser;
+  ParsedLine l;
+  const std::string a = "DEF INT AR[2,3]=SET(1,2,3), BR[4]=REP(7)";
+  parser.parse(a, l);
+  EXPECT_EQ(l.statement, Statement::Def);
+  EXPECT_EQ(l.def_type, "INT");
+  ASSERT_EQ(l.defs.size(), 2u);
+  EXPECT_EQ(l.defs[0].name, "AR");
+  EXPECT_EQ(l.defs[0].rank, 2);
+  EXPECT_EQ(l.defs[0].init_kind, InitKind::List);
+  EXPECT_EQ(l.defs[0].init_count, 3u);
+  EXPECT_EQ(l.defs[1].rank, 1);
+  EXPECT_EQ(l.defs[1].init_kind, InitKind::Rep);
+  EXPECT_DOUBLE_EQ(l.pool[l.defs[1].init].value, 7.0);
+}
+
+// Job Planning, "Program branches (CASE ... OF ... DEFAULT ...)": branches in order, DEFAULT last.
+TEST(LineParserLanguage, CaseBranchesAndDefault) {
+  LineParser parser;
+  ParsedLine l;
+  const std::string a = "CASE(R1) OF 1 GOTOF LAB1 2 GOTOB LAB2 DEFAULT GOTOF LABD";
+  parser.parse(a, l);
+  EXPECT_EQ(l.statement, Statement::Case);
+  ASSERT_EQ(l.cases.size(), 3u);
+  EXPECT_DOUBLE_EQ(l.pool[l.cases[0].value].value, 1.0);
+  EXPECT_EQ(l.cases[0].target.label, "LAB1");
+  EXPECT_EQ(l.cases[1].jump, JumpDirection::Backward);
+  EXPECT_EQ(l.cases[2].value, kNoExpr);
+  EXPECT_EQ(l.cases[2].target.label, "LABD");
+}
+
+// Job Planning, "Program section repetition": REPEAT start [end] [P=n], REPEATB label [P=n].
+TEST(LineParserLanguage, RepeatSectionForms) {
+  LineParser parser;
+  ParsedLine l;
+  const std::string a = "REPEAT SEC_A SEC_B P=2";
+  parser.parse(a, l);
+  EXPECT_EQ(l.statement, Statement::RepeatSection);
+  EXPECT_EQ(l.call_name, "SEC_A");
+  EXPECT_EQ(l.end_label, "SEC_B");
+  EXPECT_FALSE(l.repeat_one_block);
+  EXPECT_DOUBLE_EQ(l.pool[l.passes].value, 2.0);
+  const std::string b = "REPEATB ONE P=4";
+  parser.parse(b, l);
+  EXPECT_EQ(l.statement, Statement::RepeatSection);
+  EXPECT_TRUE(l.repeat_one_block);
+  EXPECT_EQ(l.call_name, "ONE");
+  const std::string c = "REPEAT";  // alone: the REPEAT ... UNTIL loop
+  parser.parse(c, l);
+  EXPECT_EQ(l.statement, Statement::Repeat);
+}
+
+}  // namespace
+}  // namespace drycut::parser
