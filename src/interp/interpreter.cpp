@@ -131,6 +131,10 @@ void Interpreter::warn_once(const BlockContext& ctx, const std::string& what, ui
 
 void Interpreter::execute(const parser::Block& block) {
   if (ended_) return;
+  if (block.modal_save != parser::ModalSave::None) {
+    apply_modal_save(block.modal_save);
+    return;
+  }
   BlockContext ctx(block);
   apply_system_writes(block);
   apply_g_words(ctx);
@@ -138,6 +142,25 @@ void Interpreter::execute(const parser::Block& block) {
   apply_addresses(ctx);
   apply_m_words(ctx);
   execute_motion(ctx);
+}
+
+void Interpreter::apply_modal_save(parser::ModalSave what) {
+  // SAVE gives back the modal G functions and frames of the call (PGA Job Planning "SAVE"); the
+  // feed, the spindle and the tool are not modal G functions and stay as the subprogram left them.
+  if (what == parser::ModalSave::Save) {
+    saved_states_.push_back(state_);
+    return;
+  }
+  if (saved_states_.empty()) return;
+  ModalState restored = std::move(saved_states_.back());
+  saved_states_.pop_back();
+  restored.feed = state_.feed;
+  restored.feed_unit_mm = state_.feed_unit_mm;
+  restored.spindle_rpm = state_.spindle_rpm;
+  restored.spindle = state_.spindle;
+  restored.thread_lead_mm = state_.thread_lead_mm;
+  restored.thread_lead_axis = state_.thread_lead_axis;
+  state_ = std::move(restored);
 }
 
 void Interpreter::apply_g_words(BlockContext& ctx) {

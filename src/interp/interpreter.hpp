@@ -69,6 +69,7 @@ class Interpreter {
   };
 
   void apply_system_writes(const parser::Block& block);  // system_variable_writes.cpp
+  void apply_modal_save(parser::ModalSave what);         // PROC ... SAVE
   void apply_g_words(BlockContext& ctx);
   void apply_commands(BlockContext& ctx);
   void apply_addresses(BlockContext& ctx);
@@ -117,6 +118,7 @@ class Interpreter {
   Diagnostics& diagnostics_;
   InterpreterOptions options_;
   ModalState state_;
+  std::vector<ModalState> saved_states_;  // PROC ... SAVE, innermost last
   ToolState tools_;
   Eigen::Vector3d position_;  // tool carrier reference point (tool tip + applied length)
   // The tool length already contained in position_, per axis: it changes for an axis with the

@@ -58,6 +58,10 @@ struct SystemWrite {
   uint32_t column = 0;
 };
 
+// PROC ... SAVE: the subprogram's first block asks the interpreter to keep its modal state,
+// the block after the return to restore it (PGA Job Planning, "SAVE").
+enum class ModalSave : uint8_t { None, Save, Restore };
+
 struct Block {
   std::shared_ptr<const std::string> file;  // shared by all blocks of one file
   uint32_t line = 0;
@@ -70,6 +74,7 @@ struct Block {
   std::vector<CommandWord> commands;
   std::optional<std::string> tool_name;  // T="name" (case preserved)
   std::vector<SystemWrite> system_writes;
+  ModalSave modal_save = ModalSave::None;
 
   // Empties the block but keeps the vectors' capacity (the loader reuses one Block).
   void clear() {
@@ -84,6 +89,7 @@ struct Block {
     commands.clear();
     tool_name.reset();
     system_writes.clear();
+    modal_save = ModalSave::None;
   }
 
   const AddressWord* find_address(std::string_view name) const {

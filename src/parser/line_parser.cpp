@@ -254,8 +254,12 @@ void LineParser::parse_proc(ParsedLine& out) {
     }
     ++pos_;
   }
-  // SAVE, DISPLOF, SBLOF, ACTBLOCNO ... attributes change nothing for a dry run.
-  while (peek().kind == TokenKind::Name) ++pos_;
+  // SAVE restores the modal state at the return; DISPLOF, SBLOF, ACTBLOCNO ... change nothing
+  // for a dry run.
+  while (peek().kind == TokenKind::Name) {
+    if (peek().text == "SAVE") out.proc_save = true;
+    ++pos_;
+  }
   expect_end();
 }
 

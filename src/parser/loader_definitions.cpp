@@ -83,6 +83,10 @@ void ProgramLoader::execute_proc() {
   // Binds the call's arguments to the parameters: by value (converted to the parameter's type),
   // or VAR by reference (the parameter aliases the caller's variable, element or R parameter).
   Frame& f = *frames_.back();
+  if (parsed_.proc_save && !f.save && frames_.size() > 1) {
+    f.save = true;
+    pending_save_ = ModalSave::Save;  // before the first block of the subprogram
+  }
   if (f.args.size() > parsed_.defs.size())  // reported at the PROC line, where they are bound
     throw LineError(12340, parsed_.statement_column, std::to_string(f.args.size()) + " arguments for " +
                                                          std::to_string(parsed_.defs.size()) + " parameters");

@@ -38,6 +38,7 @@ struct ProgramLoader::Frame {
   std::unordered_map<std::string, LinePosition> labels;  // labels passed so far
   VariableTable locals;            // LUD
   bool executed_block = false;     // DEF is only allowed before the first executable block
+  bool save = false;               // PROC ... SAVE: the caller's modal state comes back at the return
 };
 
 // Values of names for the expression evaluator.

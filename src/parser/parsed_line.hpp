@@ -114,6 +114,7 @@ struct ParsedLine {
   std::string_view call_name;     // CALL / PROC / EXTERN / DEFINE / REPEAT start name
   std::string_view end_label;     // REPEAT start end: the end label
   bool repeat_one_block = false;  // REPEATB
+  bool proc_save = false;         // PROC ... SAVE
   ExprIndex passes = kNoExpr;     // REPEAT ... P=n
   std::string_view macro_text;    // DEFINE name AS <text> (as written)
   std::vector<CaseBranch> cases;  // CASE branches, DEFAULT last
@@ -134,6 +135,7 @@ struct ParsedLine {
     call_name = {};
     end_label = {};
     repeat_one_block = false;
+    proc_save = false;
     passes = kNoExpr;
     macro_text = {};
     cases.clear();

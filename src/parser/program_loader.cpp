@@ -125,6 +125,16 @@ bool ProgramLoader::next(Block& out) {
         break;
     }
     if (frames_.empty()) return false;
+    if (pending_save_ != ModalSave::None) {
+      // A block of its own: the interpreter keeps or restores its modal state here.
+      out.clear();
+      out.modal_save = pending_save_;
+      pending_save_ = ModalSave::None;
+      out.file = frames_.back()->file;
+      out.line = position_.line;
+      out.program_level = static_cast<int>(frames_.size()) - 1;
+      return true;
+    }
     Frame& f = *frames_.back();
     if (!read_line(f)) {
       end_of_file();
@@ -272,6 +282,7 @@ void ProgramLoader::finish_frame() {
     f.reader.seek(LinePosition{});
     return;
   }
+  if (f.save) pending_save_ = ModalSave::Restore;
   frames_.pop_back();
 }
 

@@ -150,6 +150,7 @@ class ProgramLoader {
   LinePosition position_;
 
   PendingAction pending_ = PendingAction::None;
+  ModalSave pending_save_ = ModalSave::None;  // told to the interpreter with the next block
   std::string pending_call_;
   uint64_t pending_passes_ = 1;
   uint32_t pending_column_ = 0;
