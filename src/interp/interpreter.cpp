@@ -259,7 +259,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     }
   }
   for (const AddressWord& a : ctx.block.addresses) {
-    const std::string& n = a.name;
+    const std::string_view n = a.name;  // compared with literals inline, without strlen
     if (n == "F") {
       if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
       // F has a resolution of 0.001: a smaller value is zero on the control (and would make
@@ -306,7 +306,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
     } else if (n == "A" || n == "B" || n == "C") {
-      warn_once(ctx, "rotary axis " + n + " (not simulated)", a.column);
+      warn_once(ctx, "rotary axis " + a.name + " (not simulated)", a.column);
     }
   }
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);

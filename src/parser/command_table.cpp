@@ -195,6 +195,8 @@ bool is_extended_address(std::string_view name) {
 }
 
 bool is_address(std::string_view name) {
+  // The one-letter addresses are most of every program: answered without the table.
+  if (name.size() == 1) return std::string_view("XYZABCUVWIJKFSDHTEQ").find(name[0]) != std::string_view::npos;
   return std::find(kAddresses.begin(), kAddresses.end(), name) != kAddresses.end();
 }
 

@@ -45,7 +45,29 @@ size_t scan_number(std::string_view s, size_t i) {
   return i;
 }
 
+// Digits with at most 15 significant digits in all: the integer of all digits and the power of
+// ten are exact doubles, so one division gives the correctly rounded value from_chars would.
+bool fast_decimal(std::string_view digits, double& out) {
+  static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+  uint64_t mantissa = 0;
+  int count = 0, decimals = -1;
+  for (const char c : digits) {
+    if (c == '.') {
+      if (decimals >= 0) return false;
+      decimals = 0;
+      continue;
+    }
+    if (c < '0' || c > '9' || ++count > 15) return false;
+    mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
+    if (decimals >= 0) ++decimals;
+  }
+  if (count == 0) return false;
+  out = static_cast<double>(mantissa) / kPow10[decimals > 0 ? decimals : 0];
+  return true;
+}
+
 double to_double(std::string_view text, uint32_t column) {
+  if (double v = 0.0; fast_decimal(text, v)) return v;
   if (const size_t ex = text.find("EX"); ex != std::string_view::npos) {  // mantissa EX exponent
     const double mantissa = to_double(text.substr(0, ex), column);
     const std::string_view power = text.substr(ex + 2);

@@ -17,12 +17,19 @@ bool split_letters_digits(std::string_view name, std::string_view& letters, int6
   while (i < name.size() && name[i] >= 'A' && name[i] <= 'Z') ++i;
   if (i == 0 || i == name.size()) return false;
   letters = name.substr(0, i);
-  const auto r = std::from_chars(name.data() + i, name.data() + name.size(), value);
-  if (r.ptr != name.data() + name.size()) return false;
-  // All digits but too many for the integer: still a letter+number word ("X1000...0"), not a
-  // name; the saturated value makes G/M/L/P/N words fail their range checks.
-  if (r.ec == std::errc::result_out_of_range) value = std::numeric_limits<int64_t>::max();
-  return r.ec == std::errc() || r.ec == std::errc::result_out_of_range;
+  // The digits by hand (the hot path of every address word); all digits but too many for the
+  // integer is still a letter+number word ("X1000...0"), not a name: the saturated value makes
+  // G/M/L/P/N words fail their range checks.
+  uint64_t v = 0;
+  bool saturated = false;
+  for (size_t k = i; k < name.size(); ++k) {
+    const unsigned d = static_cast<unsigned char>(name[k]) - '0';
+    if (d > 9) return false;
+    if (v > (static_cast<uint64_t>(std::numeric_limits<int64_t>::max()) - d) / 10) saturated = true;
+    else v = v * 10 + d;
+  }
+  value = saturated ? std::numeric_limits<int64_t>::max() : static_cast<int64_t>(v);
+  return true;
 }
 
 bool is_block_number_name(std::string_view name, int64_t& value) {
@@ -530,8 +537,9 @@ void LineParser::parse_words(ParsedLine& out) {
           default: {
             item.kind = ItemKind::Address;
             // The digits as written: "X0012" is 12, value parsed from the text, not the int.
-            double v = 0;
-            if (std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v).ec != std::errc())
+            double v = static_cast<double>(digits);  // exact below 2^53
+            if (digits >= (int64_t{1} << 53) &&
+                std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v).ec != std::errc())
               throw LineError(12080, t.column + 1, "malformed number " + quoted(t.text.substr(1)));
             item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, t.column + 1, kNoExpr, kNoExpr, v, t.text.substr(1)});
           }
