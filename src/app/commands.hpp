@@ -12,6 +12,7 @@ void register_generate(CLI::App& app);
 void register_run(CLI::App& app);
 void register_deviation(CLI::App& app);
 void register_sweep(CLI::App& app);
+void register_language(CLI::App& app);
 void register_report(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_experiment(CLI::App& app);

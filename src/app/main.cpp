@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   drycut::app::register_generate(app);
   drycut::app::register_deviation(app);
   drycut::app::register_sweep(app);
+  drycut::app::register_language(app);
 
   try {
     app.parse(argc, argv);

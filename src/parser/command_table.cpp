@@ -8,10 +8,7 @@
 namespace drycut::parser {
 namespace {
 
-struct CommandEntry {
-  std::string_view name;
-  Support support;
-};
+using CommandEntry = CommandInfo;
 
 constexpr Support M = Support::Modelled;
 constexpr Support N = Support::NotModelled;
@@ -123,6 +120,9 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 }
 
 }  // namespace
+
+std::span<const CommandInfo> all_commands() { return kCommands; }
+std::span<const std::string_view> all_addresses() { return kAddresses; }
 
 Support command_support(std::string_view name) {
   for (const auto& c : kCommands)

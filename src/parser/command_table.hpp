@@ -2,12 +2,22 @@
 // The one table of words drycut knows: which commands, procedures, G codes and addresses the
 // interpreter models, and which are valid SINUMERIK but not modelled (those give warning 990002
 // and are dropped from the block). Anything else is a programming error.
+#include <span>
 #include <string_view>
 
 namespace drycut::parser {
 
 // NoEffect: valid, and correctly modelled by doing nothing in a dry run (SBLOF, DISPLON ...).
 enum class Support : uint8_t { Unknown, Modelled, NotModelled, NoEffect };
+
+struct CommandInfo {
+  std::string_view name;
+  Support support;
+};
+// Every command of the table, in table order (docs/language.md lists them).
+std::span<const CommandInfo> all_commands();
+// Every address with a value (one letter or extended: PW, CR, AP, RPL ...).
+std::span<const std::string_view> all_addresses();
 
 // Commands and procedures by upper-case name (ASPLINE, CYCLE832, TRAORI, CYCLE81 ...).
 Support command_support(std::string_view upper_name);

@@ -1,0 +1,146 @@
+#include "parser/language_table.hpp"
+
+#include <array>
+
+#include "parser/function_table.hpp"
+#include "parser/system_variables.hpp"
+
+namespace drycut::parser {
+namespace {
+
+constexpr Support M = Support::Modelled;
+constexpr Support N = Support::NotModelled;
+constexpr Support E = Support::NoEffect;
+
+struct Row {
+  const char* name;
+  Support support;
+  const char* meaning;
+};
+
+// Block structure and statements: decided by the lexer, line parser and loader (PGA
+// Fundamentals "Program structure"; Job Planning "Flexible NC programming", "Program flow").
+constexpr std::array kSyntax{
+    Row{"N10 / :10", M, "block number, main block number"},
+    Row{"LABEL:", M, "jump label (two letters or _ first)"},
+    Row{"/ /0 ... /9", M, "block skip levels (all off unless set)"},
+    Row{"; comment", M, "comment to the end of the line"},
+    Row{"N10G1X10Y20", M, "compact blocks: one letter and a digit begin an address word, which ends with its digits"},
+    Row{"X=expr", M, "address with an expression; AC() IC() DC() ACP() ACN() (DC/ACP/ACN warn: direction of a rotary axis)"},
+    Row{"X1= S1= M2=3 H7=40", M, "extended addresses: axis names, spindle/auxiliary function numbers"},
+    Row{"G[group]=n", M, "indirect G code by group and internal number (groups 1 6 7 8 10 12 13 14 15 18)"},
+    Row{"M[n]= S[n]= H[n]= T[n]= D[n]=", M, "address extension as an expression"},
+    Row{"AX[axis]=", M, "axis given by an AXIS value"},
+    Row{"1.5EX3, 'H1F', 'B101'", M, "exponent, hexadecimal and binary constants"},
+    Row{"\"text\"", M, "string constant"},
+};
+
+constexpr std::array kStatements{
+    Row{"DEF INT/REAL/BOOL/CHAR/STRING[n]/AXIS/FRAME", M, "local variables, scalars and arrays [a] [a,b] [a,b,c], = value, =(list), =SET(list), =REP(v)"},
+    Row{"DEF NCK / DEF CHAN", M, "global variables (GUD) in definition files (.DEF beside the program or --definitions)"},
+    Row{"DEFINE name AS text", M, "macro (in definition files or the program)"},
+    Row{"PROC name(type p, VAR type q, type r[n]) SAVE DISPLOF SBLOF", M, "subprogram with value and reference parameters; SAVE restores the caller's modal G functions and frames"},
+    Row{"EXTERN name(types)", M, "declaration of a subprogram with parameters (nothing to execute)"},
+    Row{"name / name(args) / L123 / CALL \"name\" / name P3", M, "subprogram calls (16 levels), passes"},
+    Row{"RET / M17 / M2 / M30", M, "end of subprogram / program"},
+    Row{"IF ... ELSE ... ENDIF", M, "structured condition"},
+    Row{"WHILE ... ENDWHILE", M, "loop"},
+    Row{"FOR v = a TO b ... ENDFOR", M, "counting loop (INT/REAL variable or R parameter)"},
+    Row{"REPEAT ... UNTIL cond", M, "loop"},
+    Row{"LOOP ... ENDLOOP", M, "endless loop (left by a jump)"},
+    Row{"GOTOF / GOTOB / GOTO / GOTOC target", M, "jumps to a label, block number, STRING variable or string expression"},
+    Row{"IF cond GOTOx target", M, "conditional jump"},
+    Row{"CASE expr OF c GOTOx l ... DEFAULT GOTOx l", M, "multi-way jump"},
+    Row{"REPEAT start [end] P=n / REPEATB label P=n", M, "program section repetition"},
+    Row{"SETAL(n[, text])", M, "cycle/user alarm: 60000-61999 and 63000-69999 stop the program, 62000-62999 only display (warning)"},
+    Row{"MSG(text)", M, "message (composed with <<)"},
+    Row{"STOPRE", M, "preprocessing stop"},
+    Row{"ID=n WHEN/WHENEVER/FROM/EVERY ... DO ...", N, "synchronized actions: accepted, not simulated"},
+    Row{"SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", N, "interrupt routines: accepted, never triggered in a dry run"},
+    Row{"MCALL / PCALL / EXTCALL", N, "modal and external calls: accepted with a warning"},
+};
+
+constexpr std::array kOperators{
+    Row{"+ - * / DIV MOD", M, "arithmetic (DIV integer division, MOD remainder)"},
+    Row{"== <> < > <= >=", M, "comparison (REAL: relative tolerance 1e-12), strings compare as text"},
+    Row{"AND OR XOR NOT", M, "logic"},
+    Row{"B_AND B_OR B_XOR B_NOT", M, "bit operations on integers"},
+    Row{"<<", M, "string concatenation (numbers converted, up to 10 significant digits)"},
+    Row{"precedence", M, "NOT B_NOT - | * / DIV MOD | + - | B_AND | B_XOR | B_OR | AND | XOR | OR | << | comparisons"},
+};
+
+void add(std::vector<LanguageFeature>& out, const char* section, std::string name, Support s, std::string meaning) {
+  out.push_back(LanguageFeature{section, std::move(name), s, std::move(meaning)});
+}
+
+}  // namespace
+
+std::string_view support_text(Support s) {
+  switch (s) {
+    case Support::Modelled: return "modelled";
+    case Support::NoEffect: return "modelled (no effect on a dry run)";
+    case Support::NotModelled: return "accepted, warning 990002";
+    default: return "refused";
+  }
+}
+
+std::vector<LanguageFeature> language_features() {
+  std::vector<LanguageFeature> out;
+  for (const Row& r : kSyntax) add(out, "Blocks and addresses", r.name, r.support, r.meaning);
+  for (const Row& r : kStatements) add(out, "Statements", r.name, r.support, r.meaning);
+  for (const Row& r : kOperators) add(out, "Operators", r.name, r.support, r.meaning);
+  for (const FunctionInfo& f : all_functions()) {
+    const bool frame = f.func == Function::FrameFunction;
+    add(out, "Functions", std::string(f.name), frame ? Support::NotModelled : Support::Modelled,
+        std::string(f.meaning) + (frame ? " (the FRAME value is not computed)" : ""));
+  }
+  for (const CommandInfo& c : all_commands()) add(out, "Commands", std::string(c.name), c.support, "");
+  add(out, "Commands", "CYCLEnnn, POCKETn, SLOTn, HOLESn ...", Support::Modelled,
+      "standard cycles: NC subprograms shipped in programs/cycles (docs/cycles.md); a cycle in the user's folders wins");
+  for (int g = 0; g < 1000; ++g) {
+    const Support s = g_code_support(g);
+    if (s == Support::Unknown || (g > 505 && g < 599)) continue;
+    add(out, "G codes", g == 505 ? "G505 ... G599" : "G" + std::to_string(g), s, "");
+  }
+  for (std::string_view a : all_addresses()) add(out, "Addresses", std::string(a), Support::Modelled, "");
+  const std::array<std::pair<const char*, const char*>, 6> sysvars{{
+      {"$MN_ $MC_ $MA_[axis] $MM_", "machine data: the profile's value (its fields under their MD names, and its machine_data map); unknown: 0 and warning 990007"},
+      {"$SN_ $SC_ $SA_[axis]", "setting data: as machine data"},
+      {"$P_ $AA_ $AC_ $VA_ $A_", "programmed and actual state from the interpreter ($P_GG[g], $P_EP[ax], $AA_IM[ax], $P_F, $P_TOOLNO, $P_TOOL, $P_TOOLR ...); `check` and unknown names: 0"},
+      {"$A_IN $A_OUT $A_INA $A_OUTA $A_DBB $A_DBW $A_DBD $A_DBR", "inputs, outputs, PLC data: the profile's machine_data map, default 0"},
+      {"$TC_DP3 $TC_DP6 [t, d] and other $TC_", "tool data: the run's tool table (length, radius); written values are kept"},
+      {"any other $ name", "0 and warning 990007 (a write is kept)"},
+  }};
+  for (const auto& [name, meaning] : sysvars) add(out, "System variables", name, Support::Modelled, meaning);
+  return out;
+}
+
+std::string language_markdown() {
+  std::string md =
+      "# The NC language in drycut\n\n"
+      "Generated by `drycut language --markdown` from the tables the parser decides with; a test\n"
+      "keeps this file equal to that output. Every row is **modelled** (drycut does what the\n"
+      "control does), **modelled (no effect on a dry run)** (the control's effect is on display,\n"
+      "single block or buffering, nothing a dry run measures), or **accepted, warning 990002**\n"
+      "(valid on the control, not simulated: the run goes on and the warning names it). A word in\n"
+      "no row is refused with the control's alarm (12550 name not defined, 12470 G function\n"
+      "unknown, 12080 syntax error ...). The rules behind the rows, with their sources, are in\n"
+      "docs/language-rules.md; the conformance programs in tests/conformance/language/.\n";
+  std::string section;
+  for (const LanguageFeature& f : language_features()) {
+    if (f.section != section) {
+      section = f.section;
+      md += "\n## " + section + "\n\n| name | drycut | meaning |\n|---|---|---|\n";
+    }
+    std::string name = f.name;
+    std::string escaped;
+    for (char c : name) {
+      if (c == '|') escaped += "\\|";
+      else escaped += c;
+    }
+    md += "| `" + escaped + "` | " + std::string(support_text(f.support)) + " | " + f.meaning + " |\n";
+  }
+  return md;
+}
+
+}  // namespace drycut::parser
