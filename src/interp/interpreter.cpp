@@ -25,7 +25,10 @@ constexpr double kMaxTurns = 999;           // TURN=0..999
 constexpr double kMaxToolNumber = 32000;    // T number
 constexpr double kMaxEdgeNumber = 32000;    // D number
 constexpr int kUnsupported = 990006;  // catalogued: function not modelled, would change the path
-constexpr int kNotModelled = 990002;  // catalogued warning: no effect on the path modelled
+constexpr int kNotModelled = 990002;
+// Largest value of a geometry address (9 digits before the decimal point, PGA Fundamentals
+// "Address format"): beyond it a radius or knot span is no number the control takes.
+constexpr double kMaxAddressValue = 999999999.999;  // catalogued warning: no effect on the path modelled
 
 int axis_index(std::string_view name) {
   if (name == "X") return 0;
@@ -758,6 +761,7 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
     }
     if (cr) {
       if (cr->value == 0) raise(ctx, 14040, "CR=0", cr->column);
+      if (!(std::abs(cr->value) <= kMaxAddressValue)) raise(ctx, 12160, "CR outside the control's value range", cr->column);
       result = geometry::arc_from_radius(start, end, cr->value * unit, cw, plane);
     } else if (ar && has_center) {
       result = geometry::arc_from_angle_and_center(start, center, ar->value * std::numbers::pi / 180.0, cw, plane);
@@ -770,6 +774,8 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
     }
   }
   if (result.alarm != 0) raise(ctx, result.alarm, result.detail);
+  if (!(std::isfinite(result.curve->length()) && result.curve->end().allFinite()))
+    raise(ctx, 14040, "the circle cannot be computed (radius or angle out of range)");
   if (in_machine) {
     e.curve = result.curve;
   } else {
@@ -803,9 +809,11 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
     weight = pw->value;
   }
   if (const AddressWord* pl = ctx.block.find_address("PL")) {
-    if (pl->value <= 0) raise(ctx, 12160, "PL must be > 0", pl->column);
+    if (!(pl->value > 0 && pl->value <= kMaxAddressValue))
+      raise(ctx, 12160, "PL must be > 0 and within the control's value range", pl->column);
     knot_span = pl->value * (state_.inch ? kMmPerInch : 1.0);
   }
+  last_spline_block_ = ctx.ref();
   try {
     spline_.add(target, weight, knot_span, std::move(e));
     spline_.drain(sink_);
@@ -827,8 +835,17 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
 void Interpreter::end_spline_run(const Vector3d* next_direction) {
   SplineCondition end = state_.spline_end;
   if (end == SplineCondition::Tangent && !next_direction) end = SplineCondition::Natural;
-  spline_.finish(to_spline_end(end, next_direction ? *next_direction : Vector3d::Zero()));
-  spline_.drain(sink_);
+  try {
+    spline_.finish(to_spline_end(end, next_direction ? *next_direction : Vector3d::Zero()));
+    spline_.drain(sink_);
+  } catch (const AlarmError& error) {
+    // The run's last spans fail only now: the alarm belongs to the run's last block.
+    if (!error.alarm().where.file.empty()) throw;
+    Alarm located = error.alarm();
+    located.where = {last_spline_block_.file_name(), last_spline_block_.line, 0};
+    located.block = last_spline_block_.text;
+    throw AlarmError(std::move(located));
+  }
   if (spline_.has_last_tangent()) {
     last_tangent_ = spline_.last_tangent();
     has_last_tangent_ = true;

@@ -128,6 +128,7 @@ class Interpreter {
   bool has_last_tangent_ = false;
   Eigen::Vector3d last_tangent_ = Eigen::Vector3d::UnitX();
   SplineRun spline_;
+  BlockRef last_spline_block_;  // where an alarm of the run's last spans belongs
   SplineBlockQuota quota_;
   DynamicsMode last_dynamics_;
   bool ended_ = false;
