@@ -3,13 +3,13 @@
 // accepted: their FRAME values are not computed (docs/language.md), so they warn. Other writes
 // were kept by the loader (later reads see them) and change nothing drycut times.
 #include "interp/interpreter.hpp"
+#include "interp/interpreter_block.hpp"
 
 #include <cstdlib>
 
 namespace drycut::interp {
-namespace {
-constexpr int kNotModelled = 990002;
-}
+
+using detail::kNotModelled;
 
 void Interpreter::apply_system_writes(const parser::Block& block) {
   for (const parser::SystemWrite& w : block.system_writes) {

@@ -1,0 +1,107 @@
+#pragma once
+// Internal to the interpreter's files (interpreter.cpp, interpreter_coordinates.cpp,
+// interpreter_curves.cpp): the value ranges, small conversions and the per-block context.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "interp/geometry/arc_solvers.hpp"
+#include "interp/interpreter.hpp"
+
+namespace drycut::interp::detail {
+
+using Eigen::Vector3d;
+
+inline constexpr double kMmPerInch = 25.4;
+// Value ranges of the programming manual; beyond them the control raises an alarm (and drycut
+// would otherwise report absurd times or convert out of range).
+inline constexpr double kMinFeed = 0.001;          // F resolution (mm/min, inch/min, mm/rev)
+inline constexpr double kMaxDwellS = 999999.999;   // G4 F range
+inline constexpr double kMaxTurns = 999;           // TURN=0..999
+inline constexpr double kMaxToolNumber = 32000;    // T number
+inline constexpr double kMaxEdgeNumber = 32000;    // D number
+inline constexpr int kUnsupported = 990006;  // catalogued: function not modelled, would change the path
+inline constexpr int kNotModelled = 990002;  // catalogued warning: no effect on the path modelled
+// Largest value of a geometry address (9 digits before the decimal point, PGA Fundamentals
+// "Address format"): beyond it a radius or knot span is no number the control takes.
+inline constexpr double kMaxAddressValue = 999999999.999;
+
+inline int axis_index(std::string_view name) {
+  if (name == "X") return 0;
+  if (name == "Y") return 1;
+  if (name == "Z") return 2;
+  return -1;
+}
+
+inline geometry::Plane to_geometry_plane(PlaneSelect plane) {
+  switch (plane) {
+    case PlaneSelect::G17: return geometry::Plane::G17;
+    case PlaneSelect::G18: return geometry::Plane::G18;
+    case PlaneSelect::G19: return geometry::Plane::G19;
+  }
+  return geometry::Plane::G17;
+}
+
+inline geometry::SplineEnd to_spline_end(SplineCondition condition, const Vector3d& tangent) {
+  geometry::SplineEnd end;
+  switch (condition) {
+    case SplineCondition::Natural: end.condition = geometry::EndCondition::Natural; break;
+    case SplineCondition::Tangent: end.condition = geometry::EndCondition::Tangent; break;
+    case SplineCondition::Auto: end.condition = geometry::EndCondition::Auto; break;
+  }
+  end.tangent = tangent;
+  return end;
+}
+
+// The programmable frame instruction a command names (A...: additive), if it is one.
+inline std::optional<FrameInstruction> frame_instruction_kind(std::string_view name) {
+  if (name == "TRANS" || name == "ATRANS") return FrameInstruction::Trans;
+  if (name == "ROT" || name == "AROT") return FrameInstruction::Rot;
+  if (name == "SCALE" || name == "ASCALE") return FrameInstruction::Scale;
+  if (name == "MIRROR" || name == "AMIRROR") return FrameInstruction::Mirror;
+  return std::nullopt;
+}
+
+// Minimum spline end-point blocks per window of 10 (facts §1.2).
+inline int spline_quota(MotionMode mode, int cubic_spline_blocks) {
+  switch (mode) {
+    case MotionMode::ASpline: return 4;
+    case MotionMode::BSpline: return 6;
+    default: return std::min(10, cubic_spline_blocks + 1);
+  }
+}
+
+}  // namespace drycut::interp::detail
+
+namespace drycut::interp {
+
+// Everything one block asks for, gathered before anything moves (SINUMERIK executes a block's
+// words in a fixed order, not in the order they are written).
+struct Interpreter::BlockContext {
+  explicit BlockContext(const parser::Block& b) : block(b) {}
+  // The source of the elements this block makes (the text is copied once per element).
+  BlockRef ref() const { return BlockRef{block.file, block.line, block.text}; }
+  const std::string& file_name() const {
+    static const std::string kNone;
+    return block.file ? *block.file : kNone;
+  }
+  const parser::Block& block;
+  bool exact_stop = false;      // G9
+  bool suppress_offsets = false;  // G53, G153, SUPA: no frame for this block
+  bool dwell = false;           // G4
+  bool tool_change = false;     // M6
+  std::optional<StopKind> stop;  // M0, M1, M2, M30
+  bool preprocessing_stop = false;  // STOPRE
+  bool motion_code = false;     // a group-1 code is written in this block
+  // TRANS/ROT/SCALE/MIRROR (A...: additive): the axis words are the frame's values, not a target.
+  std::optional<FrameInstruction> frame_instruction;
+  bool additive_frame = false;
+  std::optional<PoleReference> pole;  // G110/G111/G112: the axis or polar words define the pole
+  bool compensation_changed = false;
+  double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)
+  uint32_t compensation_column = 0;  // the G41/G42 word
+  std::optional<double> block_feed;  // F in this block (not a G4 block)
+};
+
+
+}  // namespace drycut::interp

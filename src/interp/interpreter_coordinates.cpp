@@ -1,0 +1,145 @@
+// Where a block goes: tool length, the frame chain (settable and programmable frames), polar
+// coordinates, and the target of a block in workpiece and machine coordinates.
+#include <cmath>
+
+#include "interp/interpreter.hpp"
+#include "interp/interpreter_block.hpp"
+
+namespace drycut::interp {
+
+using Eigen::Vector3d;
+using parser::AddressWord;
+using parser::ValueMode;
+using namespace detail;
+
+Vector3d Interpreter::tool_length_vector() const {
+  Vector3d length = Vector3d::Zero();
+  length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
+  return length;
+}
+
+const Frame& Interpreter::block_frame(const BlockContext& ctx) const {
+  return state_.frames.total(ctx.suppress_offsets);
+}
+
+bool Interpreter::is_incremental(const AddressWord& a) const {
+  return a.mode == ValueMode::Incremental || (a.mode == ValueMode::Default && !state_.absolute);
+}
+
+PolarWords Interpreter::polar_words(const BlockContext& ctx) const {
+  PolarWords w;
+  if (const AddressWord* ap = ctx.block.find_address("AP")) {
+    w.angle_deg = ap->value;
+    w.angle_incremental = ap->mode == ValueMode::Incremental;
+  }
+  if (const AddressWord* rp = ctx.block.find_address("RP")) w.radius_mm = rp->value * (state_.inch ? kMmPerInch : 1.0);
+  return w;
+}
+
+void Interpreter::select_settable_frame(const BlockContext& ctx, int code, uint32_t column) {
+  const int index = settable_frame_index(code);
+  state_.work_offset = settable_frame_name(index);
+  state_.frames.set_settable(settable_frames_[static_cast<size_t>(index)]);
+  if (index != 0 && !settable_defined_[static_cast<size_t>(index)])
+    warn_once(ctx, state_.work_offset + " has no offset in the machine profile; zero used", column);
+}
+
+void Interpreter::set_settable_frame(int index, const Frame& frame) {
+  if (index < 0 || index >= kSettableFrames) return;
+  settable_frames_[static_cast<size_t>(index)] = frame;
+  settable_defined_[static_cast<size_t>(index)] = true;
+}
+
+void Interpreter::set_programmable_frame(const Frame& frame) { state_.frames.set_programmable(frame); }
+
+void Interpreter::apply_frame_instruction(const BlockContext& ctx) {
+  // TRANS X.. / ROT RPL=.. / SCALE X.. / MIRROR X0 ...: the words are the frame's values.
+  const double unit = state_.inch ? kMmPerInch : 1.0;
+  const FrameInstruction kind = *ctx.frame_instruction;
+  FrameInstructionWords words;
+  for (const AddressWord& a : ctx.block.addresses) {
+    if (const int i = axis_index(a.name); i >= 0) {
+      words.axes[static_cast<size_t>(i)] = kind == FrameInstruction::Trans ? a.value * unit : a.value;
+    } else if (a.name == "RPL") {
+      words.rpl = a.value;
+    }
+  }
+  const Frame component = instruction_frame(kind, words, state_.plane_normal_axis());
+  // A scale factor 0 (or a product beyond the double range) leaves no way back from the machine
+  // to the workpiece system.
+  if (!component.invertible() || !state_.frames.programmable().then(component).invertible())
+    raise(ctx, kUnsupported, "frame without an inverse (scale factor 0 or out of range)");
+  state_.frames.program(component, ctx.additive_frame);
+}
+
+void Interpreter::define_pole(const BlockContext& ctx) {
+  const double unit = state_.inch ? kMmPerInch : 1.0;
+  const PlaneIndices axes = state_.plane_indices();
+  PoleWords cartesian;
+  for (const AddressWord& a : ctx.block.addresses) {
+    const int i = axis_index(a.name);
+    if (i == axes.first) cartesian.first = a.value * unit;
+    if (i == axes.second) cartesian.second = a.value * unit;
+  }
+  const Vector3d here = block_frame(ctx).to_inner(position_);
+  state_.polar.define_pole(*ctx.pole, cartesian, polar_words(ctx), axes, here);
+}
+
+bool Interpreter::frame_mirrors_plane(const Frame& frame) const {
+  if (frame.is_pure_translation()) return false;
+  const PlaneIndices axes = state_.plane_indices();
+  const Vector3d n = frame.vector_to_outer(Vector3d::Unit(axes.first)).cross(frame.vector_to_outer(Vector3d::Unit(axes.second)));
+  return n[axes.normal] < 0;
+}
+
+void Interpreter::check_compensation_plane(const BlockContext& ctx) const {
+  const Frame& frame = block_frame(ctx);
+  if (state_.compensation == CompensationSide::None || frame.is_pure_translation()) return;
+  // Tool radius compensation works in the machine's working plane: a frame that tilts the plane
+  // (ROT about a plane axis) would need 3-D compensation, which is not modelled.
+  const PlaneIndices axes = state_.plane_indices();
+  const Vector3d n = frame.vector_to_outer(Vector3d::Unit(axes.first)).cross(frame.vector_to_outer(Vector3d::Unit(axes.second)));
+  if (std::abs(n[axes.normal]) < (1 - 1e-9) * n.norm())
+    raise(ctx, kUnsupported, "tool radius compensation in a plane the frame tilts out of G17/G18/G19");
+}
+
+Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
+  const double unit = geometry_unit();
+  const Frame& frame = block_frame(ctx);
+  const PolarWords polar = polar_words(ctx);
+  const Vector3d length = tool_length_vector();
+  Target t;
+  t.length_before = length_applied_;
+  if (frame.is_pure_translation() && !polar.any()) {
+    // Per axis and exact: the position of an axis not written does not move. Tool length: the
+    // carrier stands the length above the tip from the first move of that axis on; an
+    // incremental move carries only the part of the length not yet applied.
+    t.machine = position_;
+    t.length_after = length_applied_;
+    for (const AddressWord& a : ctx.block.addresses) {
+      const int i = axis_index(a.name);
+      if (i < 0) continue;
+      const bool incremental = is_incremental(a);
+      t.machine[i] = incremental ? position_[i] + a.value * unit : a.value * unit + frame.offset()[i];
+      t.machine[i] += length[i] - (incremental ? length_applied_[i] : 0.0);
+      t.length_after[i] = length[i];
+    }
+    t.workpiece = frame.to_inner(t.machine - t.length_after);
+    return t;
+  }
+  // Through the workpiece system of the tool tip: axes not written keep their workpiece
+  // coordinate; the tool length joins with the first move that writes its axis, as above.
+  t.workpiece = frame.to_inner(position_ - length_applied_);
+  t.length_after = length_applied_;
+  for (const AddressWord& a : ctx.block.addresses) {
+    const int i = axis_index(a.name);
+    if (i < 0) continue;
+    t.workpiece[i] = is_incremental(a) ? t.workpiece[i] + a.value * unit : a.value * unit;
+    t.length_after[i] = length[i];
+  }
+  if (polar.any()) t.workpiece = state_.polar.target(polar, state_.plane_indices(), t.workpiece);
+  t.machine = frame.to_outer(t.workpiece) + t.length_after;
+  return t;
+}
+
+}  // namespace drycut::interp
