@@ -5,7 +5,7 @@ namespace drycut::machine {
 std::map<std::string, double, std::less<>> machine_data_values(const MachineProfile& p) {
   std::map<std::string, double, std::less<>> md;
   // Units as the control shows them: mm/min, m/s^2, m/s^3, s.
-  md["$MN_SCALING_SYSTEM_IS_METRIC"] = 1;  // MD10240: metric base system
+  md["$MN_SCALING_SYSTEM_IS_METRIC"] = p.base_unit_inch ? 0 : 1;  // MD10240
   md["$MN_SYSCLOCK_CYCLE_TIME"] = p.ipo_cycle_s;  // MD10050 (with MD10070 = 1)
   md["$MN_IPO_SYSCLOCK_TIME_RATIO"] = 1;
   md["$MC_MAX_PATH_JERK"] = p.path_jerk_mm_s3 / 1000.0;                 // MD20600
@@ -17,6 +17,10 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MC_CIRCLE_ERROR_CONST"] = p.circle_error_const_mm;
   md["$MC_CIRCLE_ERROR_FACTOR"] = p.circle_error_factor;               // MD21010
   md["$SC_CUTCOM_DECEL_LIMIT"] = p.cutcom_decel_limit;                 // SD42528
+  md["$MC_TOOL_CHANGE_MODE"] = p.tool_change_mode;                     // MD22550
+  md["$MC_TOOL_CHANGE_M_CODE"] = p.tool_change_m_code;                 // MD22560
+  md["$MC_CUTTING_EDGE_DEFAULT"] = p.cutting_edge_default;             // MD20270
+  md["$MA_SPIND_VELO_LIMIT[SP1]"] = p.max_spindle_speed_rpm;           // MD35100
   for (const AxisData& a : p.axes) {
     for (const std::string& axis : {a.name + "1", a.name}) {
       md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * 60.0;        // MD32000
