@@ -235,6 +235,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
         ctx.tool_change = true;
     }
   }
+  // T="name" is not an address word: program it before the words so that a D in the same block
+  // (`T="BALL_R3" D1`, as posts write it) belongs to the prepared tool, as with `T1 D1`.
+  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string& n = a.name;
     if (n == "F") {
@@ -286,7 +289,6 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       warn_once(ctx, "rotary axis " + n + " (not simulated)", a.column);
     }
   }
-  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
 }
 
 void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_t column) {
