@@ -5,7 +5,7 @@ namespace drycut::machine {
 std::map<std::string, double, std::less<>> machine_data_values(const MachineProfile& p) {
   std::map<std::string, double, std::less<>> md;
   // Units as the control shows them: mm/min, m/s^2, m/s^3, s.
-  md["$MN_SCALING_SYSTEM_IS_METRIC"] = 1;  // MD10240: metric base system
+  md["$MN_SCALING_SYSTEM_IS_METRIC"] = p.base_unit_inch ? 0 : 1;  // MD10240: base system (profile base_unit)
   md["$MN_SYSCLOCK_CYCLE_TIME"] = p.ipo_cycle_s;  // MD10050 (with MD10070 = 1)
   md["$MN_IPO_SYSCLOCK_TIME_RATIO"] = 1;
   md["$MC_MAX_PATH_JERK"] = p.path_jerk_mm_s3 / 1000.0;                 // MD20600
