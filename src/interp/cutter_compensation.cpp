@@ -42,6 +42,18 @@ double signed_offset(const CompensationRequest& request) {
   return 0.0;
 }
 
+// The plane the request compensates in: G17/G18/G19, or the plane a frame tilted (its first axis
+// and normal in machine coordinates; the second axis completes a right-handed triple).
+CompensationPlane compensation_plane(const CompensationRequest& request) {
+  if (!request.tilted) return CompensationPlane::from_normal_axis(request.plane_normal_axis);
+  return {request.tilted_normal, request.tilted_first, request.tilted_normal.cross(request.tilted_first)};
+}
+
+bool same_plane(const CompensationPlane& a, const CompensationPlane& b) {
+  constexpr double kSameDirection = 1e-9;
+  return (a.normal - b.normal).norm() < kSameDirection && (a.first - b.first).norm() < kSameDirection;
+}
+
 double in_plane_length(const geometry::Curve& curve, const CompensationPlane& plane) {
   if (curve.max_curvature() == 0.0) return plane.project(curve.end() - curve.start()).norm();
   double sum = 0.0;
@@ -103,7 +115,8 @@ void CutterCompensation::consume(PathElement element) {
     deselect(std::move(element));
     return;
   }
-  if (element.is_motion() && element.compensation.plane_normal_axis != plane_axis_)
+  if (element.is_motion() && (element.compensation.plane_normal_axis != plane_axis_ ||
+                              !same_plane(compensation_plane(element.compensation), plane_)))
     raise(10757, "plane changed while G41/G42 is active", element.source);
   if (!element.is_motion() || !element.curve || in_plane_length(*element.curve, plane_) < kZeroInPlaneLength) {
     count_dummy(element);
@@ -139,7 +152,7 @@ void CutterCompensation::count_dummy(const PathElement& element) {
 
 void CutterCompensation::select(PathElement approach) {
   plane_axis_ = approach.compensation.plane_normal_axis;
-  plane_ = CompensationPlane::from_normal_axis(plane_axis_);
+  plane_ = compensation_plane(approach.compensation);
   if (approach.compensation.radius_mm < 0.0)
     raise(10751, "negative tool radius", approach.source);
   tool_position_ = approach.curve->start();  // the approach starts wherever the tool is

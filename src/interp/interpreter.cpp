@@ -172,6 +172,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
         ctx.tool_change = true;
     }
   }
+  // T="name" is not an address word: program it before the words so that a D in the same block
+  // (`T="BALL_R3" D1`, as posts write it) belongs to the prepared tool, as with `T1 D1`.
+  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string_view n = a.name;  // compared with literals inline, without strlen
     if (n == "F") {
@@ -223,7 +226,6 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       warn_once(ctx, "rotary axis " + a.name + " (not simulated)", a.column);
     }
   }
-  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
 }
 
 void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_t column) {
@@ -319,6 +321,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.compensation.collision_detection = state_.collision_detection;
   e.compensation.disc = state_.disc;
   e.compensation.plane_normal_axis = state_.plane_normal_axis();
+  tilt_compensation_plane(ctx, e.compensation);
   return e;
 }
 
@@ -401,7 +404,6 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     const Vector3d& target = programmed.machine;
     length_applied_ = programmed.length_after;
     check_limits(ctx, target);
-    check_compensation_plane(ctx);
     const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
     if (run_ends && (state_.spline_mode() || state_.motion == MotionMode::ArcTangent)) {
       // A new spline type, or CT (which is tangent to the run's end itself): ETAN takes the chord.

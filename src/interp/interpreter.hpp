@@ -106,7 +106,7 @@ class Interpreter {
   void apply_frame_instruction(const BlockContext& ctx);
   void define_pole(const BlockContext& ctx);
   bool frame_mirrors_plane(const Frame& frame) const;
-  void check_compensation_plane(const BlockContext& ctx) const;
+  void tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const;
   Target target_position(BlockContext& ctx);
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,

@@ -92,15 +92,21 @@ bool Interpreter::frame_mirrors_plane(const Frame& frame) const {
   return n[axes.normal] < 0;
 }
 
-void Interpreter::check_compensation_plane(const BlockContext& ctx) const {
+void Interpreter::tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const {
   const Frame& frame = block_frame(ctx);
-  if (state_.compensation == CompensationSide::None || frame.is_pure_translation()) return;
-  // Tool radius compensation works in the machine's working plane: a frame that tilts the plane
-  // (ROT about a plane axis) would need 3-D compensation, which is not modelled.
+  if (request.side == CompensationSide::None || frame.is_pure_translation()) return;
+  // A frame that tilts the working plane (ROT about a plane axis, CYCLE800 in 3+2 machining):
+  // the control compensates in the tilted plane, 2.5-D as in G17/G18/G19 (PGsl "Tool radius
+  // compensation"; Cycles "Swivel - CYCLE800": machining in the swivelled plane).
   const PlaneIndices axes = state_.plane_indices();
-  const Vector3d n = frame.vector_to_outer(Vector3d::Unit(axes.first)).cross(frame.vector_to_outer(Vector3d::Unit(axes.second)));
-  if (std::abs(n[axes.normal]) < (1 - 1e-9) * n.norm())
-    raise(ctx, kUnsupported, "tool radius compensation in a plane the frame tilts out of G17/G18/G19");
+  const Vector3d first = frame.vector_to_outer(Vector3d::Unit(axes.first));
+  const Vector3d n = first.cross(frame.vector_to_outer(Vector3d::Unit(axes.second)));
+  if (std::abs(n[axes.normal]) >= (1 - 1e-9) * n.norm()) return;  // still the machine's plane
+  request.tilted = true;
+  request.tilted_first = first.normalized();
+  // frame_mirrors_plane swapped the side when n points against the machine's normal axis; the
+  // swapped side about -n is the programmed side about n.
+  request.tilted_normal = (n[axes.normal] < 0 ? -n : n).normalized();
 }
 
 Interpreter::Target Interpreter::target_position(BlockContext& ctx) {

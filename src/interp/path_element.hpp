@@ -49,6 +49,12 @@ struct CompensationRequest {
   bool collision_detection = false;   // CDON
   double disc = 0.0;                  // DISC= (0..100) for G450
   int plane_normal_axis = 2;          // 2 = G17 (XY), 1 = G18 (ZX), 0 = G19 (YZ)
+  // A frame that tilts the working plane (3+2 machining, CYCLE800): the plane's first axis and
+  // normal in machine coordinates, the normal oriented so that `side` (already swapped for a
+  // mirrored plane) is judged about it. Unset: the plane of plane_normal_axis.
+  bool tilted = false;
+  geometry::Vec3 tilted_first = geometry::Vec3::UnitX();
+  geometry::Vec3 tilted_normal = geometry::Vec3::UnitZ();
 };
 
 struct PathElement {

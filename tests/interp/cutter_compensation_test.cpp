@@ -67,6 +67,25 @@ TEST(CutterCompensation, PassesElementsUnchangedWhileInactive) {
   EXPECT_TRUE(run.sink.finished);
 }
 
+TEST(CutterCompensation, WorksInAPlaneAFrameTilted) {
+  // The program's G17 plane turned by ROT X90 onto the machine's X/Z plane: first axis X,
+  // normal (0, -1, 0). G41 offsets by normal x tangent: along +X that is (0, 0, 1), so the
+  // contour X0..20 at Z0 runs at Z2; the left turn up +Z at X20 is an inside corner, offset
+  // (-1, 0, 0): the two offset lines meet at (18, 0, 2). The approach ends normal to the first
+  // contour element at (0, 0, 2).
+  StageRun run;
+  Comp comp{.side = CompensationSide::Left, .tilted = std::make_pair(Vec3(1, 0, 0), Vec3(0, -1, 0))};
+  run.feed({line({-10, 0, -10}, {0, 0, 0}, comp, 1), line({0, 0, 0}, {20, 0, 0}, comp, 2),
+            line({20, 0, 0}, {20, 0, 20}, comp, 3), line({20, 0, 20}, {10, 0, 30}, comp.off(), 4)});
+  ASSERT_FALSE(run.diagnostics.has_alarms());
+  const auto& out = run.sink.elements;
+  ASSERT_GE(out.size(), 4u);
+  expect_line(out[0], {-10, 0, -10}, {0, 0, 2}, 1);
+  expect_line(out[1], {0, 0, 2}, {18, 0, 2}, 2);
+  EXPECT_LT((out[2].curve->start() - Vec3(18, 0, 2)).norm(), 1e-9);
+  EXPECT_LT((out[2].curve->end() - Vec3(18, 0, 20)).norm(), 1e-9);
+}
+
 TEST(CutterCompensation, SquareOutsideG42WithTransitionCircles) {
   StageRun run;
   Comp comp{.side = CompensationSide::Right};

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,7 @@ struct Comp {
   bool kont = false;
   bool cdon = true;
   int plane_axis = 2;
+  std::optional<std::pair<Vec3, Vec3>> tilted = std::nullopt;  // first axis, normal of a plane a frame tilted
   interp::CompensationRequest request() const {
     interp::CompensationRequest r;
     r.side = side;
@@ -49,6 +52,11 @@ struct Comp {
     r.contour_approach = kont;
     r.collision_detection = cdon;
     r.plane_normal_axis = plane_axis;
+    if (tilted) {
+      r.tilted = true;
+      r.tilted_first = tilted->first;
+      r.tilted_normal = tilted->second;
+    }
     return r;
   }
   Comp off() const {

@@ -234,10 +234,26 @@ TEST(Frames, ScaleFactorZeroIsRefused) {
   EXPECT_EQ(r->alarm->where.line, 2u);
 }
 
-TEST(Frames, TiltedPlaneWithCompensationIsNotModelled) {
-  auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nROT X30\nG41 G1 X10 F100\nM30\n");
-  ASSERT_TRUE(r->alarm);
-  EXPECT_EQ(r->alarm->number, 990006);
+TEST(Frames, CompensationWorksInThePlaneAFrameTilts) {
+  // ROT X90 (3+2 machining): workpiece X stays machine X, workpiece Y becomes machine Z, so the
+  // G17 plane of the program is the machine's X/Z plane, normal e_x x e_z = (0, -1, 0). G41 is
+  // requested in that plane; the side is not swapped (no mirror). Without rotation: the machine's
+  // own plane, nothing tilted.
+  auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nROT X90\nG41 G1 X10 F100\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  const auto& c = r->sink.motions().back().compensation;
+  EXPECT_EQ(c.side, CompensationSide::Left);
+  EXPECT_TRUE(c.tilted);
+  EXPECT_TRUE(near(c.tilted_first, Vector3d(1, 0, 0)));
+  EXPECT_TRUE(near(c.tilted_normal, Vector3d(0, -1, 0)));
+  auto flat = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nROT Z30\nG41 G1 X10 F100\nM30\n");
+  ASSERT_FALSE(flat->alarm) << flat->alarm->format();
+  EXPECT_FALSE(flat->sink.motions().back().compensation.tilted);
+  // ROT Y180 turns the plane upside down: normal (0, 0, -1), so the side is swapped (as for a
+  // mirror) and judged about +Z: G42 about +Z is G41 about the tilted normal.
+  auto flipped = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nROT Y180\nG41 G1 X10 F100\nM30\n");
+  ASSERT_FALSE(flipped->alarm) << flipped->alarm->format();
+  EXPECT_EQ(flipped->sink.motions().back().compensation.side, CompensationSide::Right);
 }
 
 TEST(Frames, SetSettableFrameTakesEffectOnTheNextSelection) {

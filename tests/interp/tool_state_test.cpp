@@ -32,6 +32,15 @@ TEST(ToolState, EdgeBeforeM6BelongsToThePreparedTool) {
   EXPECT_DOUBLE_EQ(again->sink.motions()[0].compensation.radius_mm, 4.0);
 }
 
+TEST(ToolState, EdgeAfterANamedToolBelongsToThePreparedTool) {
+  // `T="DRILL" D2` then M6 (NX/hyperMILL posts write named tools so): the D follows the T word
+  // as with `T2 D2`: D2 of DRILL (radius 4) after M6, no notice about an empty spindle.
+  auto r = run_program("T=\"DRILL\" D2\nM6\nG42 G1 X10 F100\nM30\n", two_tools());
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  EXPECT_EQ(count_warnings(*r, 990012), 0u);
+  EXPECT_DOUBLE_EQ(r->sink.motions()[0].compensation.radius_mm, 4.0);
+}
+
 TEST(ToolState, CuttingEdgeDefaultAfterAChange) {
   auto p = two_tools();
   // MD20270 = 1: edge 1 of T2 (r 3).
