@@ -94,7 +94,7 @@ struct Block {
 
   const AddressWord* find_address(std::string_view name) const {
     for (const auto& a : addresses)
-      if (a.name == name) return &a;
+      if (std::string_view(a.name) == name) return &a;
     return nullptr;
   }
   bool has_g(int code) const {

@@ -68,7 +68,10 @@ class ProgramLoader::BlockBuilder {
 
   void address(const Item& item) {
     if (!is_address(item.name)) throw LineError(12550, item.column, "address " + std::string(item.name) + " not defined");
-    out_.addresses.push_back(AddressWord{std::string(item.name), l_.parsed_.pool[item.expr].value, ValueMode::Default, item.column});
+    AddressWord& w = out_.addresses.emplace_back();  // no temporary: the hot path of every block
+    w.name.assign(item.name);
+    w.value = l_.parsed_.pool[item.expr].value;
+    w.column = item.column;
     has_words_ = true;
   }
 
