@@ -193,20 +193,7 @@ ExprIndex ExpressionParser::function_call(const Token& t) {
   if (!f) throw LineError(12550, t.column, "unknown function " + std::string(t.text));
   ++pos_;
   std::array<ExprIndex, 32> args{};
-  size_t count = 0;
-  if (peek().kind != TokenKind::RParen) {
-    for (;;) {
-      if (count == args.size()) throw LineError(12080, peek().column, "too many arguments");
-      args[count++] = parse();
-      if (peek().kind == TokenKind::Comma) {
-        ++pos_;
-        continue;
-      }
-      break;
-    }
-  }
-  if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
-  ++pos_;
+  const size_t count = list(TokenKind::RParen, args, false, "too many arguments");
   if (count < f->min_args || count > f->max_args)
     throw LineError(12080, t.column, "wrong number of arguments for " + std::string(f->name));
   const auto first = static_cast<ExprIndex>(pool_.args.size());
@@ -217,20 +204,28 @@ ExprIndex ExpressionParser::function_call(const Token& t) {
 uint32_t ExpressionParser::indices(ExprIndex& first) {
   ++pos_;  // '['
   std::array<ExprIndex, 3> idx{};
-  uint32_t count = 0;
-  for (;;) {
-    if (count == idx.size()) throw LineError(12080, peek().column, "more than 3 array indices");
-    idx[count++] = parse();
-    if (peek().kind == TokenKind::Comma) {
-      ++pos_;
-      continue;
-    }
-    break;
-  }
-  if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
-  ++pos_;
+  if (peek().kind == TokenKind::RBracket) throw LineError(12080, peek().column, "index expected");
+  const auto count = static_cast<uint32_t>(list(TokenKind::RBracket, idx, false, "more than 3 array indices"));
   first = static_cast<ExprIndex>(pool_.args.size());
   pool_.args.insert(pool_.args.end(), idx.begin(), idx.begin() + count);
+  return count;
+}
+
+size_t ExpressionParser::list(TokenKind close, std::span<ExprIndex> out, bool empty_items, const char* too_many) {
+  size_t count = 0;
+  if (peek().kind != close) {
+    for (;;) {
+      if (count == out.size()) throw LineError(12080, peek().column, too_many);
+      const bool empty = peek().kind == TokenKind::Comma || peek().kind == close;
+      if (empty && !empty_items) throw LineError(12080, peek().column, "expression expected");
+      out[count++] = empty ? kNoExpr : parse();
+      if (peek().kind != TokenKind::Comma) break;
+      ++pos_;
+    }
+  }
+  if (peek().kind != close)
+    throw LineError(12080, peek().column, close == TokenKind::RBracket ? "missing ']'" : "missing ')'");
+  ++pos_;
   return count;
 }
 

@@ -21,6 +21,10 @@ class ExpressionParser {
   ExprIndex parse();
   // Parses "[i, j, k]" (position at '['); returns the count, `first` indexes pool.args.
   uint32_t index_list(ExprIndex& first) { return indices(first); }
+  // The items "a, b, c" up to and including the token `close` (the opener is already read):
+  // at most out.size() (else 12080 `too_many`); `empty_items` lets an item be left out
+  // (kNoExpr), as in CYCLE81(10,,2). An empty list before `close` has no items.
+  size_t list(TokenKind close, std::span<ExprIndex> out, bool empty_items, const char* too_many);
 
  private:
   ExprIndex comparison();

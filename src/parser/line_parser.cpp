@@ -156,17 +156,13 @@ void LineParser::parse_type(DefEntry& e) {
 // "[3]", "[2,3]", "[,5]" (open dimension of a PROC array parameter): the dimension expressions.
 void LineParser::parse_dimensions(ParsedLine& out, DefEntry& e) {
   ++pos_;  // '['
-  for (;;) {
-    if (e.rank == 3) throw LineError(12080, peek().column, "more than 3 array dimensions");
-    e.dims[e.rank++] = (peek().kind == TokenKind::Comma || peek().kind == TokenKind::RBracket) ? kNoExpr : expression(out);
-    if (peek().kind == TokenKind::Comma) {
-      ++pos_;
-      continue;
-    }
-    break;
+  if (peek().kind == TokenKind::RBracket) {  // ARR[]: one open dimension (a PROC parameter)
+    ++pos_;
+    e.rank = 1;
+    return;
   }
-  if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
-  ++pos_;
+  e.rank = static_cast<uint8_t>(ExpressionParser(tokens_, pos_, out.pool)
+                                    .list(TokenKind::RBracket, e.dims, true, "more than 3 array dimensions"));
 }
 
 // "= v", "= (a, b, c)", "= SET(a, b, c)", "= REP(v)"
@@ -181,17 +177,9 @@ void LineParser::parse_initialiser(ParsedLine& out, DefEntry& e) {
     return;
   }
   ++pos_;  // '('
-  std::vector<ExprIndex> values;
-  for (;;) {
-    values.push_back(expression(out));
-    if (peek().kind == TokenKind::Comma) {
-      ++pos_;
-      continue;
-    }
-    break;
-  }
-  if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
-  ++pos_;
+  std::vector<ExprIndex> buffer(tokens_.size());  // never more values than tokens
+  const size_t n = ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, buffer, false, "too many values");
+  const std::span<const ExprIndex> values(buffer.data(), n);
   if (rep) {
     if (values.size() != 1) throw LineError(12080, e.column, "REP takes one value");
     e.init_kind = InitKind::Rep;
@@ -502,24 +490,12 @@ void LineParser::parse_words(ParsedLine& out) {
       pos_ += 2;
       item.kind = ItemKind::Procedure;
       // Arguments may be empty: CYCLE800(,"TABLE",1)
-      ExprIndex args[64];
-      uint32_t count = 0;
-      if (peek().kind != TokenKind::RParen) {
-        for (;;) {
-          if (count == 64) throw LineError(12080, peek().column, "too many arguments");
-          args[count++] = (peek().kind == TokenKind::Comma || peek().kind == TokenKind::RParen) ? kNoExpr : expression(out);
-          if (peek().kind == TokenKind::Comma) {
-            ++pos_;
-            continue;
-          }
-          break;
-        }
-      }
-      if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "missing ')'");
-      ++pos_;
+      std::array<ExprIndex, 64> args{};
+      const auto count = static_cast<uint32_t>(
+          ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, args, true, "too many arguments"));
       item.arg_first = static_cast<uint32_t>(out.pool.args.size());
       item.arg_count = count;
-      out.pool.args.insert(out.pool.args.end(), args, args + count);
+      out.pool.args.insert(out.pool.args.end(), args.begin(), args.begin() + count);
     } else {
       ++pos_;
       std::string_view letters;
