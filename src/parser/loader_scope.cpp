@@ -33,8 +33,13 @@ size_t character_position(const std::string& text, const Value& index, uint32_t 
 }  // namespace
 
 Variable* ProgramLoader::find_variable(std::string_view name) {
-  if (!frames_.empty())
+  if (!frames_.empty()) {
     if (Variable* v = frames_.back()->locals.find(name)) return v;
+    // MD11120 LUD_EXTENDED_SCOPE = 1: the main program's variables (PUD) are seen in its
+    // subprograms too.
+    if (program_global_data_ && frames_.size() > 1)
+      if (Variable* v = frames_.front()->locals.find(name)) return v;
+  }
   return globals_.find(name);
 }
 

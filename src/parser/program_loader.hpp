@@ -138,6 +138,7 @@ class ProgramLoader {
   std::unique_ptr<Scope> scope_;
   std::vector<double> r_parameters_;
   VariableTable globals_;  // GUD: definition files
+  bool program_global_data_ = false;  // MD11120 LUD_EXTENDED_SCOPE: main program variables are PUD
   SystemVariables system_variables_;
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
   LoopGuard loop_guard_;

@@ -108,6 +108,18 @@ TEST_F(CheckCommand, MissingProgramsAlarmIsTheDefaultBehaviour) {
   }
 }
 
+// `--missing-programs warn`: warning 14011 once per missing name, the call skipped, the
+// program goes on to its end (the blocks after the call run).
+TEST_F(CheckCommand, MissingProgramsWarnSkipsTheCallOncePerName) {
+  write("WARN.MPF", "G0 X0 Y0 Z0\nOEM_PROBE(1, 2)\nOEM_PROBE(3, 4)\nG0 X5\nM30\n");
+  const CliRun r = run(path("WARN.MPF") + " --missing-programs warn --json", true);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  const size_t first = r.out.find("WARNING 14011");
+  ASSERT_NE(first, std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("WARNING 14011", first + 1), std::string::npos) << "one warning per name: " << r.out;
+  EXPECT_NE(r.out.find("\"blocks_executed\": 3"), std::string::npos) << r.out;  // G0, G0 X5, M30
+}
+
 TEST_F(CheckCommand, MissingMainFileIsUsageErrorExitTwo) {
   EXPECT_EQ(run(path("NOPE.MPF")).exit_code, 2);
 }

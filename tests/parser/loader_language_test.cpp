@@ -22,9 +22,9 @@ class LoaderLanguage : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   // Runs the program; returns the X values of the executed blocks in order.
-  std::vector<double> xs(const std::string& text) {
+  std::vector<double> xs(const std::string& text, LoaderOptions options = {}) {
     std::ofstream(dir_ / "MAIN.MPF", std::ios::binary) << text;
-    ProgramLoader loader(LoaderOptions{}, diagnostics_);
+    ProgramLoader loader(options, diagnostics_);
     loader.open_main(dir_ / "MAIN.MPF");
     std::vector<double> out;
     Block b;
@@ -100,6 +100,32 @@ TEST_F(LoaderLanguage, TooManyArgumentsAreRefused) {
   std::ofstream(dir_ / "SUB_C.SPF", std::ios::binary) << "PROC SUB_C(REAL PA)\nX=PA\nM17\n";
   EXPECT_EQ(xs("SUB_C(4)\nM30\n"), std::vector<double>{4});
   EXPECT_EQ(alarm_of("SUB_C(4, 5)\nM30\n"), 12340);
+}
+
+// LUD by default: a subprogram does not see the main program's variables (12550); with
+// MD11120 LUD_EXTENDED_SCOPE = 1 they are program-global (PUD) and it does.
+TEST_F(LoaderLanguage, MainProgramVariablesAreSeenInSubprogramsOnlyWithLudExtendedScope) {
+  std::ofstream(dir_ / "SUB_PUD.SPF", std::ios::binary) << "G0 X=DEPTH+1\nM17\n";
+  const std::string main = "DEF REAL DEPTH=4\nSUB_PUD\nM30\n";
+  EXPECT_EQ(alarm_of(main), 12550);
+  LoaderOptions pud;
+  pud.machine_data["$MN_LUD_EXTENDED_SCOPE"] = 1;
+  EXPECT_EQ(xs(main, pud), std::vector<double>{5.0});
+}
+
+// An endless loop whose state repeats is found at the second visit, not at the step limit.
+TEST_F(LoaderLanguage, EndlessLoopWithUnchangedStateIsFoundAtOnce) {
+  LoaderOptions options;
+  options.max_steps = 1'000'000'000;
+  try {
+    xs("R1=0\nLBL: G0 X=R1\nR2=R1\nGOTOB LBL\nM30\n", options);
+    FAIL() << "no alarm";
+  } catch (const AlarmError& e) {
+    EXPECT_EQ(e.alarm().number, 990004);
+    EXPECT_EQ(e.alarm().where.line, 4u);
+  }
+  // A loop that changes its counter is no endless loop: it ends by its condition.
+  EXPECT_EQ(xs("R1=0\nLBL: R1=R1+1\nIF R1<1000 GOTOB LBL\nG0 X=R1\nM30\n", options), std::vector<double>{1000.0});
 }
 
 }  // namespace
