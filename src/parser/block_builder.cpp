@@ -120,6 +120,10 @@ class ProgramLoader::BlockBuilder {
       l_.assign_variable(*v, item.index_first, item.index_count, item.expr, item.column);
       return;
     }
+    if (item.index_count == 0 && is_r_parameter_name(item.name)) {
+      l_.assign_r_parameter(std::stod(std::string(item.name.substr(1))), l_.eval(item.expr), item.column);
+      return;
+    }
     if (!is_address(item.name)) {
       // OVR=50, FA[X]=100, POS[X]=10, SPOS=0, CTOL=0.01: valid settings drycut does not model.
       const Support s = command_support(item.name);
@@ -131,10 +135,6 @@ class ProgramLoader::BlockBuilder {
     }
     if (item.index_count > 0) {
       indexed_address(item);
-      return;
-    }
-    if (is_r_parameter_name(item.name)) {
-      l_.assign_r_parameter(std::stod(std::string(item.name.substr(1))), l_.eval(item.expr), item.column);
       return;
     }
     if (is_address(item.name) || is_extended_address(item.name)) {

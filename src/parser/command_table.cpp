@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace drycut::parser {
@@ -125,8 +126,13 @@ std::span<const CommandInfo> all_commands() { return kCommands; }
 std::span<const std::string_view> all_addresses() { return kAddresses; }
 
 Support command_support(std::string_view name) {
-  for (const auto& c : kCommands)
-    if (c.name == name) return c.support;
+  // Every name word of every block asks: one hash lookup, not a walk through the table.
+  static const std::unordered_map<std::string_view, Support> kByName = [] {
+    std::unordered_map<std::string_view, Support> m;
+    for (const auto& c : kCommands) m.emplace(c.name, c.support);
+    return m;
+  }();
+  if (const auto it = kByName.find(name); it != kByName.end()) return it->second;
   // Standard cycles (CYCLE81, CYCLE800, POCKET3 ...) are not here: they are subprogram calls,
   // found in the user's folders first, then in drycut's own NC cycles (programs/cycles).
   return Support::Unknown;

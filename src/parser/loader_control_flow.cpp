@@ -367,10 +367,8 @@ void ProgramLoader::loop_state(std::string& out) const {
     for (const auto& r : frame->repeats) put(r.remaining);
     frame->locals.append_state(out);
   }
-  size_t n = r_parameters_.size();
-  while (n > 0 && r_parameters_[n - 1] == 0.0) --n;
-  put(n);
-  out.append(reinterpret_cast<const char*>(r_parameters_.data()), n * sizeof(double));
+  put(r_used_);
+  out.append(reinterpret_cast<const char*>(r_parameters_.data()), r_used_ * sizeof(double));
   globals_.append_state(out);
   system_variables_.append_state(out);
   put(macros_.size());

@@ -144,6 +144,7 @@ void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t 
 void ProgramLoader::assign_r_parameter(double index, double value, uint32_t column) {
   scope_->r_parameter(index, column);  // range check
   r_parameters_[static_cast<size_t>(index)] = value;
+  r_used_ = std::max(r_used_, static_cast<size_t>(index) + 1);
 }
 
 void ProgramLoader::assign_system_variable(const Item& item, Block& out) {
@@ -170,6 +171,7 @@ CallArgument ProgramLoader::call_argument(ExprIndex e) {
     const double index = n.op == ExprOp::RParam ? n.value : eval(n.a);
     scope_->r_parameter(index, n.column);
     a.r_parameter = &r_parameters_[static_cast<size_t>(index)];
+    r_used_ = std::max(r_used_, static_cast<size_t>(index) + 1);  // a VAR parameter may write it
     a.value = Value(*a.r_parameter);
     return a;
   }

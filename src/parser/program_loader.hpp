@@ -137,6 +137,7 @@ class ProgramLoader {
   std::vector<std::unique_ptr<Frame>> frames_;
   std::unique_ptr<Scope> scope_;
   std::vector<double> r_parameters_;
+  size_t r_used_ = 0;  // R parameters from r_used_ on were never written (all 0)
   VariableTable globals_;  // GUD: definition files
   bool program_global_data_ = false;  // MD11120 LUD_EXTENDED_SCOPE: main program variables are PUD
   SystemVariables system_variables_;
