@@ -32,11 +32,13 @@ int motion_index(MotionMode m) {
 }
 
 // T number of a tool selection ("5" -> 5; a named tool -> its number in the table; none -> 0).
-double tool_number(const std::optional<std::string>& id) {
+double tool_number(const ToolState& tools, const std::optional<std::string>& id) {
   if (!id) return 0.0;
   char* end = nullptr;
   const double v = std::strtod(id->c_str(), &end);
-  return end && *end == '\0' ? v : 0.0;
+  if (end && *end == '\0') return v;
+  const machine::Tool* tool = tools.find(*id);
+  return tool ? tool->number : 0.0;
 }
 
 int code_index(int code) {
@@ -92,8 +94,8 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
   if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
   if (n == "$P_TOOLL") return Value(tools.offsets().length_mm);
-  if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools.active_tool()));
-  if (n == "$P_TOOLP") return Value(tool_number(tools.programmed_tool()));
+  if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
+  if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
   if (n == "$TC_DP3") return number(tool_datum(3, indices));
   if (n == "$TC_DP6") return number(tool_datum(6, indices));
   if (n == "$TC_GETT" && indices.size() == 1) {

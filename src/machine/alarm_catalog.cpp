@@ -51,7 +51,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990001, S::Alarm, "Too few spline blocks in a window of 10 blocks", A::Drycut},
     AlarmInfo{990002, S::Warning, "Command not modelled by drycut; block executed without it", A::Drycut},
     AlarmInfo{990003, S::Alarm, "Program nesting deeper than 16 levels", A::Drycut},
-    AlarmInfo{990004, S::Alarm, "Step limit reached (endless loop?)", A::Drycut},
+    AlarmInfo{990004, S::Alarm, "Endless loop (the step limit is reached, or the program comes back to a state it had)", A::Drycut},
     AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
     AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
     AlarmInfo{990007, S::Warning, "Value not known to drycut; the documented default is used", A::Drycut},

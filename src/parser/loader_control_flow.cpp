@@ -281,36 +281,30 @@ void ProgramLoader::execute_case() {
   }
 }
 
-std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label, bool) {
+std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label) {
   Frame& f = *frames_.back();
   if (auto it = f.labels.find(label); it != f.labels.end()) return it->second;
-  // Not passed yet: search the whole file (labels cached on the way).
+  // Not passed yet: search the whole file with a parser of its own (the current line's parse
+  // stays valid), then read on where reading was.
   const LinePosition resume = f.reader.tell();
-  const LinePosition here = position_;
-  const std::string here_text = text_;
   std::optional<LinePosition> found;
   f.reader.seek(LinePosition{});
   RawLine raw;
   std::string line;
   ParsedLine parsed;
   LineParser parser;
-  while (f.reader.next(raw)) {
+  while (!found && f.reader.next(raw)) {
     if (raw.too_long) continue;
     decode_line_to_utf8(raw.bytes, line);
     if (is_blank_or_comment(line)) continue;
     try {
       parser.parse(line, parsed);
     } catch (const LineError&) {
-      continue;
+      continue;  // a broken line raises its alarm when it is executed, not here
     }
-    if (parsed.label == label) {
-      found = raw.position;
-      break;
-    }
+    if (parsed.label == label) found = raw.position;
   }
   f.reader.seek(resume);
-  position_ = here;
-  text_ = here_text;
   return found;
 }
 
@@ -330,11 +324,11 @@ void ProgramLoader::execute_repeat_section() {
   RepeatSection r;
   r.resume = f.reader.tell();
   r.remaining = static_cast<uint64_t>(passes);
-  const auto start = find_label_position(start_label, false);
+  const auto start = find_label_position(start_label);
   if (!start) throw LineError(14080, column, start_label);
   r.start = *start;
   if (one_block || !end_label.empty()) {
-    const auto end = one_block ? start : find_label_position(end_label, true);
+    const auto end = one_block ? start : find_label_position(end_label);
     if (!end) throw LineError(14080, column, end_label);
     // The section ends after the end line: find where the next line starts.
     f.reader.seek(*end);
@@ -380,7 +374,7 @@ void ProgramLoader::check_endless_loop() {
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
   loop_state(loop_state_);
   if (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads()))
-    raise(990004, "endless loop: the program comes back to line " + std::to_string(f.reader.tell().line) +
+    raise(990004, "back at line " + std::to_string(f.reader.tell().line) +
                       " with every variable unchanged", 0);
 }
 

@@ -127,7 +127,7 @@ class ProgramLoader {
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
-  std::optional<LinePosition> find_label_position(const std::string& label, bool forward_first);
+  std::optional<LinePosition> find_label_position(const std::string& label);
   Statement skip_forward(bool stop_at_else);
   void push_control(const ControlFrame& c);
 
