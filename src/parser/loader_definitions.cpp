@@ -150,9 +150,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
     try {
       parser_.parse(text_, parsed_);
       if (parsed_.statement == Statement::Def) {
-        DefEntry dummy;
-        const bool was_global = !parsed_.def_scope.empty();
-        if (!was_global) parsed_.def_scope = "CHAN";  // a DEF in a GUD file is global
+        if (parsed_.def_scope.empty()) parsed_.def_scope = "CHAN";  // a DEF in a GUD file is global
         execute_def();
       } else if (parsed_.statement == Statement::Define) {
         macros_.insert_or_assign(std::string(parsed_.call_name), std::string(trimmed(parsed_.macro_text)));
