@@ -62,7 +62,7 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     if (auto v = view_->read_system_variable(name, indices)) return {*v, false};
   }
   if (c == SystemVariableClass::InputOutput) return {Value(0.0), false};
-  // Without the interpreter (`check`) state reads 0 silently: values matter only to `run`.
+  // The loader alone (no interpreter behind it) reads state as 0, silently.
   if (!view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) return {Value(0.0), false};
   return {Value(0.0), true};
 }
