@@ -29,6 +29,7 @@ constexpr std::array kCatalog{
     AlarmInfo{12410, S::Alarm, "Wrong index type", A::ThirdParty},
     AlarmInfo{12430, S::Alarm, "Index invalid", A::ThirdParty},
     AlarmInfo{12470, S::Alarm, "G function unknown", A::ThirdParty},
+    AlarmInfo{12475, S::Alarm, "Invalid G function number", A::ThirdParty},
     AlarmInfo{12550, S::Alarm, "Name not defined or option not available", A::ThirdParty},
     AlarmInfo{12630, S::Alarm, "Skip identifier or label not allowed in control-structure block", A::ThirdParty},
     AlarmInfo{12640, S::Alarm, "Invalid nesting of control structures", A::ThirdParty},

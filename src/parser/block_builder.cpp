@@ -158,6 +158,9 @@ class ProgramLoader::BlockBuilder {
     const int k = static_cast<int>(n);
     if (item.name == "G") {
       const double code_index = l_.eval(item.expr);
+      // Range first: a double beyond int is undefined behaviour in the conversion.
+      if (!(code_index >= 1 && code_index <= 999) || code_index != std::trunc(code_index))
+        throw LineError(12475, item.column, "G[" + std::to_string(k) + "]=" + number_to_text(code_index));
       const int code = g_code_of_group(k, static_cast<int>(code_index));
       if (code < 0) {
         l_.warn_not_modelled("G[" + std::to_string(k) + "]=" + number_to_text(code_index) + " (G group)", item.column);
