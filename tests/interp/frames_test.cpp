@@ -241,7 +241,8 @@ TEST(Frames, CompensationWorksInThePlaneAFrameTilts) {
   // own plane, nothing tilted.
   auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nROT X90\nG41 G1 X10 F100\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
-  const auto& c = r->sink.motions().back().compensation;
+  const auto motions = r->sink.motions();  // a copy: the reference below must outlive the call
+  const auto& c = motions.back().compensation;
   EXPECT_EQ(c.side, CompensationSide::Left);
   EXPECT_TRUE(c.tilted);
   EXPECT_TRUE(near(c.tilted_first, Vector3d(1, 0, 0)));
