@@ -348,6 +348,12 @@ void ProgramLoader::execute_repeat_section() {
     f.reader.seek(r.resume);
     return;
   }
+  // Each open section occupies a program level (Job Planning, "Program section repetition"):
+  // a section that contains its own REPEAT (REPEATB on its own label) nests without end.
+  size_t levels = frames_.size();
+  for (const auto& frame : frames_) levels += frame->repeats.size();
+  if (levels > static_cast<size_t>(kMaxProgramLevel))
+    throw LineError(990003, column, "REPEAT " + start_label);
   --r.remaining;
   f.repeats.push_back(r);
   f.reader.seek(r.start);
