@@ -383,10 +383,17 @@ void ProgramLoader::loop_state(std::string& out) const {
 }
 
 void ProgramLoader::check_endless_loop() {
+  // A big state (large arrays) is compared only every state-size/1 KiB lines, so that the guard
+  // costs at most about 1 KiB of copying per line executed; states up to 1 KiB are compared at
+  // every jump. Skipping visits never gives a false alarm, and a loop is still found: the visits
+  // that are checked form a deterministic sequence too, so they repeat as well.
+  constexpr uint64_t kStateBytesPerLine = 1024;
+  if (steps_ < next_loop_check_) return;
   const Frame& f = *frames_.back();
   // The site: where the jump goes, in which program at which depth.
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
   loop_state(loop_state_);
+  next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
   if (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads()))
     raise(990004, "endless loop: the program comes back to line " + std::to_string(f.reader.tell().line) +
                       " with every variable unchanged", 0);

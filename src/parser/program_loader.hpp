@@ -142,6 +142,7 @@ class ProgramLoader {
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
   LoopGuard loop_guard_;
   std::string loop_state_;  // reused buffer
+  uint64_t next_loop_check_ = 0;  // steps_ before which a backward jump is not checked (big states)
 
   LineParser parser_;
   ParsedLine parsed_;
