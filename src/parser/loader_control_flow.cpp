@@ -171,7 +171,7 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
     // A computed target: a string is a label, a number a block number.
     const Value v = eval_value(target.expr);
     if (v.is_number()) {
-      jump_to(direction, {}, static_cast<int64_t>(v.number), target.column);
+      jump_to(direction, {}, block_number_of(v.number), target.column);
     } else {
       jump_to(direction, upper_ascii(v.text), std::nullopt, target.column);
     }
