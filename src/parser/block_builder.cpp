@@ -155,7 +155,9 @@ class ProgramLoader::BlockBuilder {
     const int k = static_cast<int>(n);
     if (item.name == "G") {
       const double code_index = l_.eval(item.expr);
-      const int code = g_code_of_group(k, static_cast<int>(code_index));
+      // An index no int holds is no G code of the group, like any index beyond its list.
+      const bool int_index = code_index > -2147483648.0 && code_index < 2147483648.0;
+      const int code = g_code_of_group(k, int_index ? static_cast<int>(code_index) : -1);
       if (code < 0) {
         l_.warn_not_modelled("G[" + std::to_string(k) + "]=" + number_to_text(code_index) + " (G group)", item.column);
         return;
