@@ -56,8 +56,9 @@ void OffsetPiece::resample() {
   int segments = 1;
   if (!straight_) {
     const double turning = range * base_->max_curvature();
-    segments = std::clamp(kMinSegments + static_cast<int>(std::ceil(turning / kTurnPerSegment)), kMinSegments,
-                          kMaxSegments);
+    // Clamped as a double: a near-cusp (curvature 1e29) or NaN must not reach the int cast.
+    const double wanted = kMinSegments + std::ceil(turning / kTurnPerSegment);
+    segments = !(wanted < kMaxSegments) ? kMaxSegments : wanted > kMinSegments ? static_cast<int>(wanted) : kMinSegments;
   }
   sample_u_.resize(static_cast<size_t>(segments) + 1);
   sample_xy_.resize(sample_u_.size());
