@@ -90,7 +90,7 @@ void LineParser::parse_head(ParsedLine& out) {
       out.number_column = peek().column;
       ++pos_;
     } else if (!out.number && peek().kind == TokenKind::Colon && peek(1).kind == TokenKind::Number) {
-      out.number = static_cast<int64_t>(peek(1).number);  // ":100" main block
+      out.number = block_number_of(peek(1).number);  // ":100" main block (saturated beyond int64)
       out.number_column = peek().column;
       pos_ += 2;
     }
