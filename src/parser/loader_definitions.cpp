@@ -161,8 +161,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
         warn(990002, "only DEF and DEFINE are read from a definition file", 1);
       }
     } catch (const LineError& e) {
-      frames_.pop_back();
-      raise(e.number(), e.detail(), e.column());
+      raise(e.number(), e.detail(), e.column());  // names the definition file (its frame is on top)
     }
   }
   frames_.pop_back();

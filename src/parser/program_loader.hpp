@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <string>
@@ -156,6 +157,7 @@ class ProgramLoader {
   uint64_t pending_passes_ = 1;
   uint32_t pending_column_ = 0;
   std::vector<CallArgument> pending_args_;
+  std::optional<Alarm> definition_alarm_;  // from a definition file: raised by the first next()
 
   std::vector<std::string> programs_used_;
   std::set<std::string, std::less<>> missing_programs_;
