@@ -76,7 +76,8 @@ void ProgramLoader::execute_control() {
       c.variable = std::string(parsed_.for_variable);
       if (Variable* v = find_variable(c.variable)) {
         v->set(v->element({}, column), Value(start), column);
-      } else if (c.variable.size() >= 2 && c.variable[0] == 'R') {
+      } else if (c.variable.size() >= 2 && c.variable[0] == 'R' &&
+                 c.variable.find_first_not_of("0123456789", 1) == std::string::npos) {  // R<n>, not RX
         assign_r_parameter(std::stod(c.variable.substr(1)), start, column);
       } else {
         throw LineError(12550, column, "FOR variable " + c.variable + " not defined");
