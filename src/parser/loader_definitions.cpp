@@ -190,6 +190,11 @@ void ProgramLoader::expand_macros() {
       std::string word = text_.substr(i, j - i);
       for (char& w : word) w = static_cast<char>(w >= 'a' && w <= 'z' ? w - 'a' + 'A' : w);
       if (auto it = macros_.find(word); it != macros_.end()) {
+        // The expanded block obeys the block length limit too: a long macro used many times in
+        // one line would otherwise grow it to gigabytes.
+        if (out.size() + it->second.size() > LineReader::kMaxLineLength)
+          raise(12080, "block longer than " + std::to_string(LineReader::kMaxLineLength) +
+                           " characters after macro expansion", 1);
         out += it->second;
         changed = true;
       } else {
