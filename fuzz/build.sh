@@ -3,6 +3,8 @@
 # prepares its seed corpus. Usage: fuzz/build.sh [build dir]   (default: build-fuzz)
 # Then run, e.g.:  build-fuzz/drycut_fuzz -max_total_time=600 -timeout=5 -rss_limit_mb=2048 \
 #                    -dict=fuzz/sinumerik.dict build-fuzz/corpus build-fuzz/seeds
+# Needs clang with its runtimes (libFuzzer, sanitizers) and pkg-config from Debian (bookworm):
+#   apt-get install -y clang libclang-rt-14-dev pkg-config
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=$(readlink -f "${1:-$root/build-fuzz}")
@@ -16,7 +18,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 drycut=${DRYCUT:-$build/drycut}
 targets=drycut_motion
 [ -n "${DRYCUT:-}" ] || targets="$targets drycut"
-cmake --build "$build" --target $targets
+cmake --build "$build" -j"${JOBS:-2}" --target $targets
 
 # The fuzz target itself, linked with libFuzzer's main.
 clang++ -std=c++20 -O1 -g -fsanitize=fuzzer $san \
@@ -26,10 +28,12 @@ clang++ -std=c++20 -O1 -g -fsanitize=fuzzer $san \
   "$build/libdrycut_geometry.a" "$build/libdrycut_machine.a" \
   $(pkg-config --libs spdlog fmt) -o "$build/drycut_fuzz"
 
-# Seeds: the alarm suite, the regression programs and the reference experiment's programs.
+# Seeds: the alarm suite, the regression programs, the conformance programs (their subprograms and
+# definition files as inputs of their own) and the reference experiment's programs.
 seeds="$build/seeds"
 rm -rf "$seeds"; mkdir -p "$seeds" "$build/corpus"
-find "$root/tests/alarms" "$root/tests/programs" -type f \( -iname '*.mpf' -o -iname '*.spf' \) |
+find "$root/tests/alarms" "$root/tests/programs" "$root/tests/conformance" -type f \
+  \( -iname '*.mpf' -o -iname '*.spf' -o -iname '*.def' \) |
   while read -r f; do cp "$f" "$seeds/$(echo "${f#"$root"/}" | tr '/' '_')"; done
 "$drycut" generate --thesis "$build/thesis" > /dev/null
 find "$build/thesis" -type f | while read -r f; do cp "$f" "$seeds/thesis_$(basename "$f")"; done

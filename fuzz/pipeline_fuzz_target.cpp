@@ -14,11 +14,13 @@
 #include <fstream>
 #include <string>
 
+#include "interp/controller_state_view.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "machine/alarm.hpp"
 #include "machine/machine_profile.hpp"
 #include "motion/planner.hpp"
+#include "parser/loader_machine.hpp"
 #include "parser/program_loader.hpp"
 
 namespace {
@@ -57,9 +59,12 @@ void run_pipeline(const Workspace& w) {
   interp::CutterCompensation compensation(planner, w.profile, diagnostics);
   parser::LoaderOptions options;
   options.max_steps = kMaxSteps;
+  parser::add_machine(options, w.profile);  // $MN_/$MA_/... reads and axis names as in `run`
   parser::ProgramLoader loader(options, diagnostics);
   loader.open_main(w.program);
   interp::Interpreter interpreter(w.profile, compensation, diagnostics);
+  interp::InterpreterStateView state_view(interpreter, w.profile);
+  loader.set_state_view(&state_view);  // $P_/$AA_/$TC_ reads see the interpreted state, as in `run`
   parser::Block block;
   try {
     while (loader.next(block)) {

@@ -78,15 +78,17 @@ std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<
   const machine::Tool* tool = interpreter_.tools().find(parser::number_to_text(indices[0].number));
   if (!tool) return 0.0;
   for (const auto& e : tool->edges)
-    if (e.d == static_cast<int>(indices[1].number)) return parameter == 6 ? e.radius_mm : parameter == 3 ? e.length_mm : 0.0;
+    if (e.d == indices[1].number) return parameter == 6 ? e.radius_mm : parameter == 3 ? e.length_mm : 0.0;
   return 0.0;
 }
 
 std::optional<Value> InterpreterStateView::read_system_variable(std::string_view n, std::span<const Value> indices) const {
   const ModalState& s = interpreter_.state();
   auto number = [](std::optional<double> v) { return v ? std::optional<Value>(Value(*v)) : std::nullopt; };
-  if (n == "$P_GG" && indices.size() == 1 && indices[0].is_number())
-    return number(g_group_index(static_cast<int>(indices[0].number)));
+  if (n == "$P_GG" && indices.size() == 1 && indices[0].is_number()) {
+    const double g = indices[0].number;  // beyond 0..99 no group (and no undefined int cast)
+    return number(g_group_index(g >= 0 && g <= 99 ? static_cast<int>(g) : -1));
+  }
   if (n == "$P_EP" || n == "$AA_IM" || n == "$AA_IW" || n == "$AA_IEN" || n == "$VA_IM") return number(axis_position(indices));
   if (n == "$P_F") return Value(s.feed);
   if (n == "$P_S" || n == "$AA_S") return Value(s.spindle_rpm);

@@ -55,10 +55,10 @@ void OffsetPiece::resample() {
   const double range = u_end_ - u_begin_;
   int segments = 1;
   if (!straight_) {
-    // Clamped as a double: a huge turning (a tiny radius on a long piece) is beyond int.
     const double turning = range * base_->max_curvature();
+    // Clamped as a double: a near-cusp (curvature 1e29) or NaN must not reach the int cast.
     const double wanted = kMinSegments + std::ceil(turning / kTurnPerSegment);
-    segments = static_cast<int>(std::clamp<double>(std::isfinite(wanted) ? wanted : kMaxSegments, kMinSegments, kMaxSegments));
+    segments = !(wanted < kMaxSegments) ? kMaxSegments : wanted > kMinSegments ? static_cast<int>(wanted) : kMinSegments;
   }
   sample_u_.resize(static_cast<size_t>(segments) + 1);
   sample_xy_.resize(sample_u_.size());

@@ -17,8 +17,10 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
     if (w.name.rfind("$TC_DP", 0) == 0 && w.indices.size() == 2 && w.indices[0].is_number() &&
         w.indices[1].is_number() && w.value.is_number()) {
       const int parameter = std::atoi(w.name.c_str() + 6);
-      if (!tools_.set_edge_parameter(parameter, static_cast<int>(w.indices[0].number),
-                                     static_cast<int>(w.indices[1].number), w.value.number))
+      // Indices no int holds are outside the table like any other (and their cast undefined).
+      auto index = [](double v) { return v > -2147483648.0 && v < 2147483648.0 ? static_cast<int>(v) : -1; };
+      if (!tools_.set_edge_parameter(parameter, index(w.indices[0].number), index(w.indices[1].number),
+                                     w.value.number))
         diagnostics_.warn(kNotModelled, w.name + ": index outside the tool table's range", where, block.text);
       continue;
     }

@@ -75,7 +75,7 @@ void LineParser::parse_head(ParsedLine& out) {
     // "/3": the level digit must follow the slash directly.
     if (peek().kind == TokenKind::Number && peek().column == out.skip_column + 1) {
       const double v = peek().number;
-      if (v != static_cast<int>(v) || v < 0 || v > 9)
+      if (!(v >= 0 && v <= 9) || v != static_cast<int>(v))
         throw LineError(14060, out.skip_column, "skip level " + std::string(peek().text) + " (0..9 allowed)");
       out.skip_level = static_cast<int>(v);
       ++pos_;
@@ -90,7 +90,7 @@ void LineParser::parse_head(ParsedLine& out) {
       out.number_column = peek().column;
       ++pos_;
     } else if (!out.number && peek().kind == TokenKind::Colon && peek(1).kind == TokenKind::Number) {
-      out.number = static_cast<int64_t>(peek(1).number);  // ":100" main block
+      out.number = block_number_of(peek(1).number);  // ":100" main block (saturated beyond int64)
       out.number_column = peek().column;
       pos_ += 2;
     }
@@ -115,7 +115,7 @@ void LineParser::parse_jump_target(ParsedLine& out, JumpTarget& target) {
   } else if (t.kind == TokenKind::Name && !computed) {
     target.label = t.text;  // a label, or a STRING variable holding one (decided when executed)
   } else if (t.kind == TokenKind::Number && !computed) {
-    target.number = static_cast<int64_t>(t.number);
+    target.number = block_number_of(t.number);
   } else if (t.kind == TokenKind::String || t.kind == TokenKind::Name || t.kind == TokenKind::Number) {
     target.expr = expression(out);  // GOTOF "LBL"<<R1
     return;

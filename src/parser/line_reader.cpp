@@ -91,8 +91,10 @@ bool LineReader::next(RawLine& out) {
   if (whole_file_ && begin_ >= end_) return false;  // (an empty file's buffer has no data())
   size_t scanned = begin_;  // no newline in [begin_, scanned)
   for (;;) {
-    const char* nl = static_cast<const char*>(
-        std::memchr(buffer_.data() + scanned, '\n', end_ - scanned));
+    // An empty file's buffer may have no storage at all: memchr must not see its null pointer.
+    const char* nl = scanned < end_ ? static_cast<const char*>(
+                                          std::memchr(buffer_.data() + scanned, '\n', end_ - scanned))
+                                    : nullptr;
     if (nl && static_cast<size_t>(nl - buffer_.data()) - begin_ > kMaxLineLength) {
       // A whole-file buffer holds the long line: report it as the streaming reader does.
       out.too_long = true;

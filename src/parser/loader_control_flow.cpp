@@ -76,7 +76,8 @@ void ProgramLoader::execute_control() {
       c.variable = std::string(parsed_.for_variable);
       if (Variable* v = find_variable(c.variable)) {
         v->set(v->element({}, column), Value(start), column);
-      } else if (c.variable.size() >= 2 && c.variable[0] == 'R') {
+      } else if (c.variable.size() >= 2 && c.variable[0] == 'R' &&
+                 c.variable.find_first_not_of("0123456789", 1) == std::string::npos) {  // R<n>, not RX
         assign_r_parameter(std::stod(c.variable.substr(1)), start, column);
       } else {
         throw LineError(12550, column, "FOR variable " + c.variable + " not defined");
@@ -171,7 +172,7 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
     // A computed target: a string is a label, a number a block number.
     const Value v = eval_value(target.expr);
     if (v.is_number()) {
-      jump_to(direction, {}, static_cast<int64_t>(v.number), target.column);
+      jump_to(direction, {}, block_number_of(v.number), target.column);
     } else {
       jump_to(direction, upper_ascii(v.text), std::nullopt, target.column);
     }
@@ -342,6 +343,12 @@ void ProgramLoader::execute_repeat_section() {
     f.reader.seek(r.resume);
     return;
   }
+  // Each open section occupies a program level (Job Planning, "Program section repetition"):
+  // a section that contains its own REPEAT (REPEATB on its own label) nests without end.
+  size_t levels = frames_.size();
+  for (const auto& frame : frames_) levels += frame->repeats.size();
+  if (levels > static_cast<size_t>(kMaxProgramLevel))
+    throw LineError(990003, column, "REPEAT " + start_label);
   --r.remaining;
   f.repeats.push_back(r);
   f.reader.seek(r.start);
@@ -369,10 +376,17 @@ void ProgramLoader::loop_state(std::string& out) const {
 }
 
 void ProgramLoader::check_endless_loop() {
+  // A big state (large arrays) is compared only every state-size/1 KiB lines, so that the guard
+  // costs at most about 1 KiB of copying per line executed; states up to 1 KiB are compared at
+  // every jump. Skipping visits never gives a false alarm, and a loop is still found: the visits
+  // that are checked form a deterministic sequence too, so they repeat as well.
+  constexpr uint64_t kStateBytesPerLine = 1024;
+  if (steps_ < next_loop_check_) return;
   const Frame& f = *frames_.back();
   // The site: where the jump goes, in which program at which depth.
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
   loop_state(loop_state_);
+  next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
   if (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads()))
     raise(990004, "back at line " + std::to_string(f.reader.tell().line) +
                       " with every variable unchanged", 0);

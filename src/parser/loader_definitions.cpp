@@ -159,8 +159,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
         warn(990002, "only DEF and DEFINE are read from a definition file", 1);
       }
     } catch (const LineError& e) {
-      frames_.pop_back();
-      raise(e.number(), e.detail(), e.column());
+      raise(e.number(), e.detail(), e.column());  // names the definition file (its frame is on top)
     }
   }
   frames_.pop_back();
@@ -189,6 +188,11 @@ void ProgramLoader::expand_macros() {
       std::string word = text_.substr(i, j - i);
       for (char& w : word) w = static_cast<char>(w >= 'a' && w <= 'z' ? w - 'a' + 'A' : w);
       if (auto it = macros_.find(word); it != macros_.end()) {
+        // The expanded block obeys the block length limit too: a long macro used many times in
+        // one line would otherwise grow it to gigabytes.
+        if (out.size() + it->second.size() > LineReader::kMaxLineLength)
+          raise(12080, "block longer than " + std::to_string(LineReader::kMaxLineLength) +
+                           " characters after macro expansion", 1);
         out += it->second;
         changed = true;
       } else {

@@ -38,6 +38,14 @@ enum class Statement : uint8_t {
 
 enum class JumpDirection : uint8_t { Forward, Backward, ForwardThenBackward, NoAlarm };
 
+// A block number from a numeric value: beyond the int64 range (or NaN) it saturates, as a
+// written N word with too many digits does (no such block exists: 14080, or nothing for GOTOC).
+inline int64_t block_number_of(double v) {
+  constexpr double kLimit = 9.2e18;  // below INT64_MAX, exactly representable
+  if (!(v > -kLimit)) return v < 0 ? -static_cast<int64_t>(kLimit) : static_cast<int64_t>(kLimit);
+  return v < kLimit ? static_cast<int64_t>(v) : static_cast<int64_t>(kLimit);
+}
+
 struct JumpTarget {
   std::string_view label;        // upper case; empty when the target is a block number
   std::optional<int64_t> number; // N100 / 100

@@ -45,7 +45,13 @@ void ProgramLoader::open_main(const std::filesystem::path& path) {
   files_ = std::make_unique<ProgramFiles>(std::move(dirs));
   programs_used_.push_back(frame->program);
   frames_.clear();
-  read_definition_files(folder);
+  try {
+    read_definition_files(folder);
+  } catch (const AlarmError& e) {
+    // Raised where callers handle the program's alarms (the block loop), not as a usage error.
+    definition_alarm_ = e.alarm();
+    frames_.clear();
+  }
   frames_.push_back(std::move(frame));
 }
 
@@ -111,6 +117,11 @@ bool ProgramLoader::read_line(Frame& f) {
 }
 
 bool ProgramLoader::next(Block& out) {
+  if (definition_alarm_) {
+    const Alarm alarm = std::move(*definition_alarm_);
+    definition_alarm_.reset();
+    throw AlarmError(alarm);
+  }
   for (;;) {
     switch (pending_) {
       case PendingAction::None: break;

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <memory>
 #include <set>
 #include <string>
@@ -144,6 +145,7 @@ class ProgramLoader {
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
   LoopGuard loop_guard_;
   std::string loop_state_;  // reused buffer
+  uint64_t next_loop_check_ = 0;  // steps_ before which a backward jump is not checked (big states)
 
   LineParser parser_;
   ParsedLine parsed_;
@@ -157,6 +159,7 @@ class ProgramLoader {
   uint64_t pending_passes_ = 1;
   uint32_t pending_column_ = 0;
   std::vector<CallArgument> pending_args_;
+  std::optional<Alarm> definition_alarm_;  // from a definition file: raised by the first next()
 
   std::vector<std::string> programs_used_;
   std::set<std::string, std::less<>> missing_programs_;

@@ -18,9 +18,15 @@ const std::string& text_arg(std::span<const Value> args, size_t k, uint32_t colu
   return args[k].text;
 }
 
+// A character code as a char; a value no int holds is no character (its cast would be undefined).
+char char_of_code(double code, uint32_t column) {
+  if (!(code > -2147483648.0 && code < 2147483648.0)) throw LineError(12160, column, "character code out of range");
+  return static_cast<char>(static_cast<int>(code));
+}
+
 // A character argument: a one-character string or a character code.
 char char_arg(std::span<const Value> args, size_t k, uint32_t column) {
-  if (k < args.size() && args[k].is_number()) return static_cast<char>(static_cast<int>(args[k].number));
+  if (k < args.size() && args[k].is_number()) return char_of_code(args[k].number, column);
   const std::string& s = text_arg(args, k, column);
   if (s.empty()) throw LineError(12150, column, "a character is needed");
   return s[0];
@@ -98,7 +104,7 @@ std::string sprint(std::span<const Value> args, uint32_t column) {
     if (next >= args.size()) throw LineError(12150, column, "SPRINT: more formats than values");
     return args[next++];
   };
-  char buf[64];
+  char buf[400];  // %.20F of the largest double: 309 digits, point, 20 decimals, sign
   for (size_t i = 0; i < format.size(); ++i) {
     if (format[i] != '%' || i + 1 == format.size()) {
       out += format[i];
@@ -109,8 +115,7 @@ std::string sprint(std::span<const Value> args, uint32_t column) {
     if (format[i] == '.') {  // %.3F
       decimals = 0;
       while (i + 1 < format.size() && format[i + 1] >= '0' && format[i + 1] <= '9')
-        decimals = decimals * 10 + (format[++i] - '0');
-      decimals = std::min(decimals, 20);
+        decimals = std::min(decimals * 10 + (format[++i] - '0'), 20);  // no int overflow
       ++i;
       if (i >= format.size()) break;
     }
@@ -121,7 +126,7 @@ std::string sprint(std::span<const Value> args, uint32_t column) {
       case 'E': std::snprintf(buf, sizeof buf, "%.*E", decimals, as_number(take(), column)); out += buf; break;
       case 'X': std::snprintf(buf, sizeof buf, "%llX", static_cast<unsigned long long>(std::llround(as_number(take(), column)))); out += buf; break;
       case 'B': out += as_number(take(), column) != 0.0 ? "TRUE" : "FALSE"; break;
-      case 'C': out += static_cast<char>(static_cast<int>(as_number(take(), column))); break;
+      case 'C': out += char_of_code(as_number(take(), column), column); break;
       case 'S': out += as_text(take()); break;
       default:
         if (format[i] == '%') out += '%';

@@ -229,6 +229,25 @@ TEST_F(Loader, AlarmsCarryFileLineColumnAndBlock) {
   EXPECT_EQ(alarm_of(""), 990010);
 }
 
+TEST_F(Loader, DefinitionFileAlarmNamesTheFileAndComesFromNext) {
+  // An alarm in a *.DEF beside the main program: raised by next() (where callers handle the
+  // program's alarms; from open_main it escaped `run` as an internal error) and located in the
+  // definition file, not in "<program>".
+  write("UGUD.DEF", "DEF NCK REAL A\nDEF NCK REAL A\n");
+  write("MAIN.MPF", "G1 X1\nM30\n");
+  loader_ = std::make_unique<ProgramLoader>(LoaderOptions{}, diagnostics_);
+  ASSERT_NO_THROW(loader_->open_main(dir_ / "MAIN.MPF"));
+  Block b;
+  try {
+    loader_->next(b);
+    FAIL() << "no alarm";
+  } catch (const AlarmError& e) {
+    EXPECT_EQ(e.alarm().number, 12170);
+    EXPECT_EQ(fs::path(e.alarm().where.file).filename(), "UGUD.DEF");
+    EXPECT_EQ(e.alarm().where.line, 2u);
+  }
+}
+
 TEST_F(Loader, MissingMainIsUsageError) {
   ProgramLoader l({}, diagnostics_);
   EXPECT_THROW(l.open_main(dir_ / "NOPE.MPF"), UsageError);
