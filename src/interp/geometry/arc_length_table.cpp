@@ -14,6 +14,11 @@ constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665,
                                          0.4786286704993665, 0.2369268850561891};
 constexpr int kInitialIntervals = 4;
 constexpr int kMaxDepth = 30;
+// A span whose speed has a cusp (repeated control points, weights) never meets the tolerance
+// near it; without a bound on the intervals the depth limit alone allows 2^30 of them (a hang
+// found by the fuzzer). Past this many the rest is accepted as it is: the cusp's length is
+// still integrated by Gauss, only less finely.
+constexpr size_t kMaxIntervals = size_t{1} << 16;
 
 }  // namespace
 
@@ -46,7 +51,8 @@ ArcLengthTable::ArcLengthTable(const Speed& speed, double u_begin, double u_end)
     stack.pop_back();
     const double m = 0.5 * (iv.a + iv.b);
     const double left = gauss5(speed, iv.a, m), right = gauss5(speed, m, iv.b);
-    if (std::abs(left + right - iv.whole) <= tol || iv.depth >= kMaxDepth) {
+    if (std::abs(left + right - iv.whole) <= tol || iv.depth >= kMaxDepth ||
+        u_.size() + stack.size() >= kMaxIntervals) {
       u_.push_back(iv.b);
       s_.push_back(s_.back() + left + right);
     } else {
