@@ -14,6 +14,18 @@ namespace {
 constexpr size_t kMaxCachedLabels = 100000;
 }
 
+void ProgramLoader::parse_during_search(Frame& f) {
+  // A line read while skipping or searching: parsed (its syntax error is its alarm) and its label
+  // remembered, so a later backward jump finds it without reading the file again.
+  try {
+    parser_.parse(text_, parsed_);
+  } catch (const LineError& e) {
+    raise(e.number(), e.detail(), e.column());
+  }
+  if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
+    f.labels.insert_or_assign(std::string(parsed_.label), position_);
+}
+
 void ProgramLoader::push_control(const ControlFrame& c) {
   // Re-entering a structure (after a jump out of it) drops whatever was left above it.
   auto& stack = frames_.back()->control;
@@ -139,13 +151,7 @@ Statement ProgramLoader::skip_forward(bool stop_at_else) {
   int depth = 0;
   while (read_line(f)) {
     if (is_blank_or_comment(text_)) continue;
-    try {
-      parser_.parse(text_, parsed_);
-    } catch (const LineError& e) {
-      raise(e.number(), e.detail(), e.column());
-    }
-    if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
-      f.labels.insert_or_assign(std::string(parsed_.label), position_);
+    parse_during_search(f);
     const Statement s = parsed_.statement;
     if (is_opener(s)) {
       ++depth;
@@ -204,13 +210,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       if (raw_.too_long) continue;
       decode_line_to_utf8(raw_.bytes, text_);
       if (is_blank_or_comment(text_)) continue;
-      try {
-        parser_.parse(text_, parsed_);
-      } catch (const LineError& e) {
-        raise(e.number(), e.detail(), e.column());
-      }
-      if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
-        f.labels.insert_or_assign(std::string(parsed_.label), position_);
+      parse_during_search(f);
       return true;
     }
   };

@@ -130,6 +130,7 @@ class ProgramLoader {
   void jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
   std::optional<LinePosition> find_label_position(const std::string& label);
   Statement skip_forward(bool stop_at_else);
+  void parse_during_search(Frame& f);
   void push_control(const ControlFrame& c);
 
   LoaderOptions options_;
