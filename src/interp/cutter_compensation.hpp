@@ -2,7 +2,7 @@
 // Tool radius compensation G41/G42/G40 as a stage of the element stream: it turns the PROGRAMMED
 // elements into TOOL-CENTRE elements (SINUMERIK group 7, with G450/G451, NORM/KONT, CDON/CDOF).
 //
-// What is modelled (see ../shared/reference/sinumerik-facts.md section 3):
+// What is modelled (docs/controller-state.md; PGsl "Tool radius compensation"):
 // - Selection: the first motion with side != None is the approach, always a straight move.
 //   NORM: it ends perpendicular to the start direction of the next element in the plane
 //   (tool centre = next start + r * normal on the compensation side). KONT: if the approach

@@ -1,6 +1,6 @@
 #pragma once
 // The alarm catalogue: every alarm number drycut raises, in one place, with its text and where
-// the number comes from (see ../shared/reference/sinumerik-facts.md §5).
+// the number comes from (the catalogue says which source gives each number).
 #include <span>
 
 #include "machine/alarm.hpp"

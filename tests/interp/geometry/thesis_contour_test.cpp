@@ -1,4 +1,4 @@
-// The reference contour of ../shared/thesis/EXPERIMENT.md: r = 18 + 4 cos(6 theta) cos(2 theta),
+// The reference contour of the reference experiment (programs/thesis): r = 18 + 4 cos(6 theta) cos(2 theta),
 // knots every 15 deg (24) or 1 deg (360) with 3 decimals, one closed loop from (22, 0).
 // Radial deviation of each spline from the true curve, sampled every 0.01 mm.
 #include <gtest/gtest.h>
