@@ -67,6 +67,8 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
   if (indices.size() != 1) return std::nullopt;
   const std::string& axis = indices[0].text;
   if (axis.empty()) return std::nullopt;
+  if (const int i = interpreter_.extra_axes().index(axis); i >= 0)
+    return interpreter_.extra_axes().position(static_cast<size_t>(i));
   for (int k = 0; k < 3; ++k)
     if (axis[0] == profile_.axes[static_cast<size_t>(k)].name[0]) return interpreter_.position()[k];
   return std::nullopt;

@@ -440,12 +440,14 @@ void CutterCompensation::emit(PathElement element, CurvePtr curve, bool last_of_
     PathElement connector = element;
     connector.kind = ElementKind::Line;
     connector.inserted = true;
+    connector.extra_axes.clear();  // the block's extra axes move once, with its last piece
     connector.curve = std::make_shared<geometry::LineCurve>(tool_position_, curve->start());
     not_final(connector);
     downstream_.consume(std::move(connector));
     tool_position_ = curve->start();
   }
   if (curve->length() < kNegligibleLength && !last_of_block) return;
+  if (!last_of_block) element.extra_axes.clear();  // extra axes move with the block's last piece
   element.kind = kind_of(curve, element.kind);
   element.curve = curve;
   if (!last_of_block) not_final(element);

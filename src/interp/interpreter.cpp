@@ -24,7 +24,8 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       options_(options),
       state_(reset_state(profile)),
       tools_(profile),
-      position_(profile.start_position) {
+      position_(profile.start_position),
+      extra_axes_(profile) {
   for (int i = 0; i < kSettableFrames; ++i) {
     settable_frames_[static_cast<size_t>(i)] = profile_settable_frame(profile, i);
     settable_defined_[static_cast<size_t>(i)] = profile_has_settable_frame(profile, i);
@@ -54,6 +55,7 @@ void Interpreter::execute(const parser::Block& block) {
   apply_g_words(ctx);
   apply_commands(ctx);
   apply_addresses(ctx);
+  apply_axis_words(ctx);
   apply_m_words(ctx);
   execute_motion(ctx);
 }
@@ -153,6 +155,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       }
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
+    } else if (apply_axis_command(ctx, c)) {
+      // FGROUP, WAITP, WAITS (interpreter_axes.cpp)
     } else if (!state_.apply_code(n)) {
       warn_once(ctx, n, c.column);
     }
@@ -222,8 +226,13 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "DISC") {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
-    } else if (n == "A" || n == "B" || n == "C") {
-      warn_once(ctx, "rotary axis " + a.name + " (not simulated)", a.column);
+    } else if (a.mode != ValueMode::Default && a.mode != ValueMode::Absolute && a.mode != ValueMode::Incremental &&
+               extra_axes_.index(n) < 0) {
+      // DC/ACP/ACN choose the way of a rotary axis: on anything else the control refuses them.
+      const int number = a.mode == ValueMode::Direct ? 16800 : a.mode == ValueMode::AbsolutePositive ? 16810 : 16820;
+      raise(ctx, number, a.name + " is not a rotary axis", a.column);
+    } else {
+      note_extra_axis_word(ctx, a);
     }
   }
 }
@@ -398,6 +407,8 @@ void Interpreter::execute_motion(BlockContext& ctx) {
                             ctx.block.find_address("K") || ctx.block.find_address("AR"));
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
+  emit_axis_waits(ctx);
+  std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
 
   if (has_axis || full_circle) {
     const Target programmed = target_position(ctx);
@@ -412,6 +423,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
       end_spline_run(direction.norm() > 0 ? &direction : nullptr);
     }
     if (state_.spline_mode()) {
+      if (!extra.empty()) warn_once(ctx, "extra axes in spline blocks (they move without time)", 0);
       add_spline_point(ctx, target);
     } else {
       const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
@@ -422,13 +434,24 @@ void Interpreter::execute_motion(BlockContext& ctx) {
         Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
         end_spline_run(direction.norm() > 0 ? &direction : nullptr);
       }
+      attach_extra_axes(ctx, e, std::move(extra));
       position_ = e.curve->end();
       check_limits(ctx, position_);
       emit(std::move(e));
     }
+  } else if (!extra.empty() && state_.spline_mode()) {
+    warn_once(ctx, "extra axes in spline blocks (they move without time)", 0);
+  } else if (!extra.empty()) {
+    // Only extra axes: a straight move of them alone (in G2/G3 too: no circle without a geometry end point).
+    if (spline_.active()) end_spline_run(nullptr);
+    PathElement e = build_line(ctx, position_);
+    if (e.label != "G0") e.label = "G1";
+    attach_extra_axes(ctx, e, std::move(extra));
+    emit(std::move(e));
   } else if (stops && spline_.active()) {
     end_spline_run(nullptr);
   }
+  emit_positioning(ctx);
   if (has_axis || full_circle) thread_chain_ = state_.thread_mode() ? std::optional(state_.motion) : std::nullopt;
   if (!state_.spline_mode()) quota_.stop();
   if (quota_.active() && !quota_.record(has_axis))

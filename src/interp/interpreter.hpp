@@ -14,6 +14,7 @@
 #include <set>
 #include <string>
 
+#include "interp/extra_axes.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/path_element.hpp"
 #include "interp/spline_block_quota.hpp"
@@ -55,6 +56,8 @@ class Interpreter {
   const ToolState& tools() const { return tools_; }
   ToolState& tools() { return tools_; }
   bool ended() const { return ended_; }
+  // Channel axes beyond X, Y, Z ($AA_IM[A] reads their positions).
+  const ExtraAxes& extra_axes() const { return extra_axes_; }
 
  private:
   struct BlockContext;
@@ -74,6 +77,16 @@ class Interpreter {
   void apply_commands(BlockContext& ctx);
   void apply_addresses(BlockContext& ctx);
   void apply_m_words(BlockContext& ctx);
+  // Extra axes and positioning axes (interpreter_axes.cpp, docs/axes.md).
+  bool note_extra_axis_word(BlockContext& ctx, const parser::AddressWord& word);
+  bool apply_axis_command(BlockContext& ctx, const parser::CommandWord& command);
+  void apply_axis_words(BlockContext& ctx);
+  void add_positioning(BlockContext& ctx, const parser::AxisWord& word);
+  void add_spindle_positioning(BlockContext& ctx, const parser::AxisWord& word);
+  std::vector<ExtraAxisMove> take_extra_axis_moves(BlockContext& ctx);
+  void attach_extra_axes(BlockContext& ctx, PathElement& element, std::vector<ExtraAxisMove> moves);
+  void emit_axis_waits(BlockContext& ctx);
+  void emit_positioning(BlockContext& ctx);
   void execute_motion(BlockContext& ctx);
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
@@ -134,6 +147,8 @@ class Interpreter {
   bool ended_ = false;
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
+  ExtraAxes extra_axes_;
+  double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
   std::array<Frame, kSettableFrames> settable_frames_;  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};
 };

@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "interp/geometry/arc_solvers.hpp"
 #include "interp/interpreter.hpp"
@@ -101,6 +103,11 @@ struct Interpreter::BlockContext {
   double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)
   uint32_t compensation_column = 0;  // the G41/G42 word
   std::optional<double> block_feed;  // F in this block (not a G4 block)
+  // Extra axes written in this block (synchronized axes): index into the profile, the word.
+  std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
+  std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block
+  std::vector<std::string> waits;            // WAITP/WAITS and implicit waits, before the motion
+  bool wait_all = false;
 };
 
 

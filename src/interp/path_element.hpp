@@ -2,7 +2,9 @@
 // The canonical boundary: the one interface between interpreter and planner. The interpreter
 // turns blocks into a stream of these plain elements; the planner knows nothing else about
 // the program. Every element carries the source block it came from.
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "interp/geometry/curve.hpp"
 #include "machine/source_location.hpp"
@@ -17,6 +19,8 @@ enum class ElementKind {
   Stop,            // M0/M1/M2/M30 or an explicit exact stop: the path comes to rest
   ToolChange,      // M6 (the path comes to rest; tool_change_time from the profile)
   DynamicsChange,  // a change of the modes below between motions (informational)
+  Positioning,     // POS/POSA/SPOS/SPOSA: axes on their own interpolators (`positioning`)
+  AxisWait,        // WAITP/WAITS (or an implicit wait): the program waits for positioning axes
 };
 
 // How consecutive blocks are joined (G group 10 plus G9).
@@ -57,6 +61,27 @@ struct CompensationRequest {
   geometry::Vec3 tilted_normal = geometry::Vec3::UnitZ();
 };
 
+// A channel axis beyond X, Y, Z moving with the element (a synchronized axis: rotary A/B/C,
+// linear U/V/W), interpolated linearly along it. `axis` indexes MachineProfile::extra_axes.
+struct ExtraAxisMove {
+  int axis = 0;
+  std::string name;    // "A", "C1" (listings)
+  double start = 0;    // machine position (degrees for a rotary axis)
+  double travel = 0;   // signed
+  bool in_feed_group = false;  // FGROUP: its travel counts in the length F refers to
+};
+
+// A positioning axis (POS/POSA, SPOS/SPOSA): its own interpolator, from rest to rest.
+struct PositioningMove {
+  std::string axis;          // "A"; "S1" for spindle 1
+  double travel = 0;         // distance (mm or degrees), >= 0
+  double velocity = 0;       // FA, else MD32060 (spindle: MD35300), units per s
+  double accel = 0;          // MAX_AX_ACCEL (spindle: MD35210)
+  double jerk = 0;           // 0: no jerk limit (BRISKA)
+  double lead_time_s = 0;    // SPOS of a turning spindle: braking to the positioning speed first
+  bool block_synchronous = true;  // POS/SPOS: the block ends when it arrives; POSA/SPOSA run on
+};
+
 struct PathElement {
   ElementKind kind = ElementKind::Line;
   geometry::CurvePtr curve;      // set for Line, Arc, SplineSpan
@@ -76,6 +101,26 @@ struct PathElement {
   CompensationRequest compensation;
   std::string label;             // what produced it: "G1", "G2", "ASPLINE", "M0", "M6 FR_4", "G4"
   BlockRef source;               // the block it belongs to
+  // Synchronized axes beyond X, Y, Z (docs/axes.md); empty for most elements.
+  std::vector<ExtraAxisMove> extra_axes;
+  bool geometry_in_feed_group = true;  // FGROUP names a geometry axis (the default group)
+  std::vector<PositioningMove> positioning;  // Positioning
+  std::vector<std::string> wait_axes;        // AxisWait: the axes waited for; empty = every axis
+
+  // The length the path feed F refers to and the planner plans along (FGROUP, PGA Fundamentals
+  // "Feedrate (G93, G94, G95, F, FGROUP)"): the geometry's length if the geometry axes are in the
+  // group, with every grouped extra axis's travel added as a further coordinate. A block moving
+  // no grouped axis but others (`G1 A90 F1000`) takes F for the axes it moves.
+  double path_length() const {
+    const double geometry = curve ? curve->length() : 0.0;
+    if (extra_axes.empty()) return geometry;
+    double grouped = geometry_in_feed_group ? geometry * geometry : 0.0, all = geometry * geometry;
+    for (const auto& m : extra_axes) {
+      all += m.travel * m.travel;
+      if (m.in_feed_group) grouped += m.travel * m.travel;
+    }
+    return std::sqrt(grouped > 1e-18 ? grouped : all);
+  }
 
   bool is_motion() const {
     return kind == ElementKind::Line || kind == ElementKind::Arc || kind == ElementKind::SplineSpan;

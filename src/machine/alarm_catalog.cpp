@@ -43,6 +43,11 @@ constexpr std::array kCatalog{
     AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
     AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
     AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
+    // Rotary axes (Diagnostics Manual; the texts as drycut understands them, docs/axes.md).
+    AlarmInfo{16800, S::Alarm, "Traverse instruction DC/CDC not allowed for this axis", A::Memory},
+    AlarmInfo{16810, S::Alarm, "Traverse instruction ACP not allowed for this axis", A::Memory},
+    AlarmInfo{16820, S::Alarm, "Traverse instruction ACN not allowed for this axis", A::Memory},
+    AlarmInfo{16830, S::Alarm, "Invalid modulo position programmed", A::Memory},
     AlarmInfo{17020, S::Alarm, "Illegal array index 1", A::Memory},
     AlarmInfo{17030, S::Alarm, "Illegal array index 2", A::Memory},
     AlarmInfo{17180, S::Alarm, "Illegal D number", A::Memory},

@@ -9,52 +9,13 @@
 #include <nlohmann/json.hpp>
 
 #include "default_profile_json.hpp"
+#include "machine/profile_axes.hpp"
 #include "machine/profile_object_reader.hpp"
 
 namespace drycut::machine {
 namespace {
 
 using nlohmann::json;
-constexpr std::array<const char*, 3> kAxisNames{"X", "Y", "Z"};
-
-double required_quantity(ProfileObjectReader& r, const std::string& name, Dimension d) {
-  auto v = r.quantity(name, d);
-  if (!v)
-    throw ProfileError(r.key_path(name) + ": missing (write it as " + name + "_<unit>, unit one of " +
-                       std::string(unit_list(d)) + ")");
-  return *v;
-}
-
-AxisData read_axis(const json& node, const std::string& path, const std::string& name) {
-  ProfileObjectReader r(node, path);
-  AxisData a;
-  a.name = name;
-  if (auto v = r.quantity("min", Dimension::Length)) a.min_mm = *v;
-  if (auto v = r.quantity("max", Dimension::Length)) a.max_mm = *v;
-  a.max_velocity_mm_s = require_positive(required_quantity(r, "max_velocity", Dimension::Velocity),
-                                         r.key_path("max_velocity"));
-  a.max_accel_mm_s2 = require_positive(required_quantity(r, "max_accel", Dimension::Acceleration),
-                                       r.key_path("max_accel"));
-  a.max_jerk_mm_s3 = require_positive(required_quantity(r, "max_jerk", Dimension::Jerk),
-                                      r.key_path("max_jerk"));
-  a.transition_jerk_mm_s3 = a.max_jerk_mm_s3;
-  if (auto v = r.quantity("transition_jerk", Dimension::Jerk))
-    a.transition_jerk_mm_s3 = require_positive(*v, r.key_path("transition_jerk"));
-  r.reject_unknown_keys();
-  if (!(a.min_mm < a.max_mm)) throw ProfileError(path + ".min: must be < max (software limit range)");
-  return a;
-}
-
-void read_axes(const json& node, MachineProfile& p) {
-  ProfileObjectReader r(node, "axes");
-  for (size_t i = 0; i < kAxisNames.size(); ++i) {
-    const json* axis = r.child(kAxisNames[i]);
-    if (!axis) r.fail(kAxisNames[i], "missing (axes X, Y and Z are required)");
-    p.axes[i] = read_axis(*axis, r.key_path(kAxisNames[i]), kAxisNames[i]);
-  }
-  r.reject_unknown_keys();
-}
-
 void read_path(const json& node, MachineProfile& p) {
   ProfileObjectReader r(node, "path");
   bool jerk_given = false;
@@ -86,6 +47,12 @@ void read_path(const json& node, MachineProfile& p) {
     p.spindle_ramp_time_s = require_non_negative(*v, r.key_path("spindle_ramp_time"));
   if (auto v = r.number("max_spindle_speed_rpm"))
     p.max_spindle_speed_rpm = require_positive(*v, r.key_path("max_spindle_speed_rpm"));
+  if (auto v = r.number("spindle_posctrl_velo_rpm"))
+    p.spindle_posctrl_velo_rpm = require_positive(*v, r.key_path("spindle_posctrl_velo_rpm"));
+  if (auto v = r.number("spindle_posctrl_accel_rev_s2"))
+    p.spindle_posctrl_accel_rev_s2 = require_positive(*v, r.key_path("spindle_posctrl_accel_rev_s2"));
+  if (auto v = r.number("spindle_speedctrl_accel_rev_s2"))
+    p.spindle_speedctrl_accel_rev_s2 = require_positive(*v, r.key_path("spindle_speedctrl_accel_rev_s2"));
   r.reject_unknown_keys();
   if (!jerk_given) {
     // No path jerk given: the smallest axis jerk is the safe stand-in.
@@ -291,16 +258,7 @@ const MachineProfile& default_profile() {
 std::string profile_to_json(const MachineProfile& p) {
   json root;
   root["name"] = p.name;
-  json axes = json::object();
-  for (const auto& a : p.axes) {
-    axes[a.name] = {{"min_mm", a.min_mm},
-                    {"max_mm", a.max_mm},
-                    {"max_velocity_mm_min", a.max_velocity_mm_s * 60.0},
-                    {"max_accel_m_s2", a.max_accel_mm_s2 / 1000.0},
-                    {"max_jerk_m_s3", a.max_jerk_mm_s3 / 1000.0},
-                    {"transition_jerk_m_s3", a.transition_jerk_mm_s3 / 1000.0}};
-  }
-  root["axes"] = axes;
+  root["axes"] = axes_to_json(p);
   root["path"] = {{"ipo_cycle_ms", p.ipo_cycle_s * 1000.0},
                   {"max_accel_ovl_factor", p.max_accel_ovl_factor},
                   {"max_path_jerk_m_s3", p.path_jerk_mm_s3 / 1000.0},
@@ -312,7 +270,10 @@ std::string profile_to_json(const MachineProfile& p) {
                   {"g0_jerk_factor", p.g0_jerk_factor},
                   {"tool_change_time_s", p.tool_change_time_s},
                   {"spindle_ramp_time_s", p.spindle_ramp_time_s},
-                  {"max_spindle_speed_rpm", p.max_spindle_speed_rpm}};
+                  {"max_spindle_speed_rpm", p.max_spindle_speed_rpm},
+                  {"spindle_posctrl_velo_rpm", p.spindle_posctrl_velo_rpm},
+                  {"spindle_posctrl_accel_rev_s2", p.spindle_posctrl_accel_rev_s2},
+                  {"spindle_speedctrl_accel_rev_s2", p.spindle_speedctrl_accel_rev_s2}};
   json offsets = json::object();
   for (const auto& [name, v] : p.work_offsets) offsets[name] = {v.x(), v.y(), v.z()};
   json rotations = json::object();

@@ -7,14 +7,22 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
 
 namespace drycut::machine {
 
+// One machine axis. A rotary axis keeps its values in degrees where the names say mm
+// (positions, velocity, acceleration, jerk): the planner treats both as path units.
 struct AxisData {
-  std::string name;               // "X", "Y", "Z"
+  std::string name;               // "X", "Y", "Z", "A", "C", "U" ...
+  bool rotary = false;            // MD30300 IS_ROT_AX
+  bool modulo = false;            // MD30310 ROT_IS_MODULO: positions wrap, DC/ACP/ACN choose the way
+  double modulo_range = 360.0;    // MD30330 MODULO_RANGE (degrees)
+  int misc_function_mask = 0;     // MD30455 MISC_FUNCTION_MASK: bit 2 = G90 on a modulo axis goes as DC
+  double pos_velocity_mm_s = 10000.0 / 60.0;  // MD32060 POS_AX_VELO: POS/POSA feed without FA
   double min_mm = -1e9;           // software limit switches (alarm 10720 outside)
   double max_mm = 1e9;
   double max_velocity_mm_s = 0;   // MD32000 MAX_AX_VELO
@@ -38,6 +46,9 @@ struct Tool {
 struct MachineProfile {
   std::string name;
   std::array<AxisData, 3> axes;                 // X, Y, Z path axes
+  // Further channel axes (rotary A/B/C, linear U/V/W ...), by name order: they move with the
+  // path (synchronized axes) or as positioning axes (POS/POSA). docs/axes.md.
+  std::vector<AxisData> extra_axes;
 
   // Interpolation and look-ahead.
   double ipo_cycle_s = 0.004;                   // MD10050 × MD10070
@@ -52,6 +63,9 @@ struct MachineProfile {
   double tool_change_time_s = 0;                // M6 duration (not derivable from the program)
   double spindle_ramp_time_s = 0;               // spindle run-up/reversal before a thread or tapping block
   double max_spindle_speed_rpm = 10000;         // MD35100 SPIND_VELO_LIMIT (G96 at the centre)
+  double spindle_posctrl_velo_rpm = 500;        // MD35300 SPIND_POSCTRL_VELO (SPOS)
+  double spindle_posctrl_accel_rev_s2 = 30;     // MD35210 GEAR_STEP_POSCTRL_ACCEL (SPOS)
+  double spindle_speedctrl_accel_rev_s2 = 30;   // MD35200 GEAR_STEP_SPEEDCTRL_ACCEL (braking before SPOS)
 
   // Interpreter data.
   std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...
@@ -77,6 +91,13 @@ struct MachineProfile {
   // ("$MN_SCALING_SYSTEM_IS_METRIC", "$MA_COMPRESS_POS_TOL[X1]", "$A_IN[3]"). The fields above
   // are answered under their own MD names (see machine_data_values()).
   std::map<std::string, double> machine_data;
+
+  // Index into extra_axes of the axis with this (upper-case) name, or -1.
+  int extra_axis_index(std::string_view axis_name) const {
+    for (size_t i = 0; i < extra_axes.size(); ++i)
+      if (extra_axes[i].name == axis_name) return static_cast<int>(i);
+    return -1;
+  }
 
   const Tool* find_tool(const std::string& name) const {
     for (const auto& t : tools)

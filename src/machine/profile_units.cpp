@@ -11,6 +11,11 @@ constexpr std::array kVelocity{UnitInfo{"mm_min", 1.0 / 60.0}, UnitInfo{"mm_s", 
 constexpr std::array kAcceleration{UnitInfo{"m_s2", 1000.0}, UnitInfo{"mm_s2", 1.0}};
 constexpr std::array kJerk{UnitInfo{"m_s3", 1000.0}, UnitInfo{"mm_s3", 1.0}};
 constexpr std::array kTime{UnitInfo{"s", 1.0}, UnitInfo{"ms", 0.001}};
+constexpr std::array kAngle{UnitInfo{"deg", 1.0}};
+constexpr std::array kAngularVelocity{UnitInfo{"deg_min", 1.0 / 60.0}, UnitInfo{"deg_s", 1.0},
+                                      UnitInfo{"rev_min", 360.0 / 60.0}};
+constexpr std::array kAngularAcceleration{UnitInfo{"deg_s2", 1.0}, UnitInfo{"rev_s2", 360.0}};
+constexpr std::array kAngularJerk{UnitInfo{"deg_s3", 1.0}, UnitInfo{"rev_s3", 360.0}};
 
 }  // namespace
 
@@ -21,6 +26,10 @@ std::span<const UnitInfo> units_of(Dimension dimension) {
     case Dimension::Acceleration: return kAcceleration;
     case Dimension::Jerk: return kJerk;
     case Dimension::Time: return kTime;
+    case Dimension::Angle: return kAngle;
+    case Dimension::AngularVelocity: return kAngularVelocity;
+    case Dimension::AngularAcceleration: return kAngularAcceleration;
+    case Dimension::AngularJerk: return kAngularJerk;
   }
   return {};
 }
@@ -38,6 +47,10 @@ std::string_view unit_list(Dimension dimension) {
     case Dimension::Acceleration: return "m_s2, mm_s2";
     case Dimension::Jerk: return "m_s3, mm_s3";
     case Dimension::Time: return "s, ms";
+    case Dimension::Angle: return "deg";
+    case Dimension::AngularVelocity: return "deg_min, deg_s, rev_min";
+    case Dimension::AngularAcceleration: return "deg_s2, rev_s2";
+    case Dimension::AngularJerk: return "deg_s3, rev_s3";
   }
   return "";
 }

@@ -1,13 +1,14 @@
 #pragma once
 // Units accepted in profile key names. A key carries its unit as a suffix
-// (`max_velocity_mm_min`); the reader converts to the internal units mm, s.
+// (`max_velocity_mm_min`); the reader converts to the internal units mm, s (degrees for angles).
 #include <optional>
 #include <span>
 #include <string_view>
 
 namespace drycut::machine {
 
-enum class Dimension { Length, Velocity, Acceleration, Jerk, Time };
+// The angular dimensions are those of rotary axes (internal unit: degree).
+enum class Dimension { Length, Velocity, Acceleration, Jerk, Time, Angle, AngularVelocity, AngularAcceleration, AngularJerk };
 
 struct UnitInfo {
   std::string_view suffix;  // as written after the quantity name: "mm_min"

@@ -28,7 +28,42 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   d.short_block_factor = profile.short_block_factor;
   d.inserted = element.inserted;
   d.ovl_factor = profile.max_accel_ovl_factor;
+  if (!element.extra_axes.empty() && length > 0) {
+    d.geometry_scale = element.curve ? element.curve->length() / length : 0.0;
+    for (const auto& m : element.extra_axes) {
+      const auto& axis = profile.extra_axes.at(static_cast<size_t>(m.axis));
+      ExtraAxisTerm t;
+      t.axis = m.axis;
+      t.tangent = m.travel / length;
+      t.velocity = axis.max_velocity_mm_s;
+      t.raw_accel = axis.max_accel_mm_s2;
+      t.accel = axis.max_accel_mm_s2 * accel_factor;
+      t.jerk = axis.max_jerk_mm_s3 * jerk_factor;
+      t.transition_jerk = axis.transition_jerk_mm_s3 * jerk_factor;
+      d.extra.push_back(t);
+    }
+  }
   return d;
+}
+
+CurvePoint path_point(const ElementDynamics& d, const geometry::Curve& curve, double s) {
+  if (d.geometry_scale == 1.0) return curve.at(s);
+  const double k = d.geometry_scale;
+  CurvePoint p = curve.at(s * k);
+  if (k <= 0) {  // the geometry stands: only extra axes move
+    p.tangent = Vec3::Zero();
+    p.curvature_vector = Vec3::Zero();
+    p.curvature_rate = Vec3::Zero();
+    p.curvature = 0;
+    p.curvature_derivative = 0;
+    return p;
+  }
+  p.tangent *= k;
+  p.curvature_vector *= k * k;
+  p.curvature *= k * k;
+  p.curvature_rate *= k * k * k;
+  p.curvature_derivative *= k * k * k;
+  return p;
 }
 
 RampLimits tangential_limits(const ElementDynamics& d, const CurvePoint& point) {
@@ -43,6 +78,12 @@ RampLimits tangential_limits(const ElementDynamics& d, const CurvePoint& point) 
     if (t < 1e-12) continue;
     accel = std::min(accel, keep * d.axis_accel[i] / t);
     if (d.soft) jerk = std::min(jerk, d.axis_jerk[i] / t);
+  }
+  for (const ExtraAxisTerm& e : d.extra) {
+    const double t = std::abs(e.tangent);
+    if (t < 1e-12) continue;
+    accel = std::min(accel, e.accel / t);  // a straight interpolation: no centripetal share
+    if (d.soft) jerk = std::min(jerk, e.jerk / t);
   }
   if (!std::isfinite(accel)) accel = keep * d.axis_accel.minCoeff();
   return {accel, jerk};

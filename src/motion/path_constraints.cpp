@@ -8,7 +8,32 @@
 namespace drycut::motion {
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Calls f(|Δt|, limits before, limits after) for every extra axis whose velocity share jumps at
+// the junction (an axis that moves on one side only jumps from or to zero; the side without it
+// lends the other side's limits).
+template <class F>
+void for_each_extra_jump(const Junction& j, F&& f) {
+  const auto& before = j.before_dynamics.extra;
+  const auto& after = j.after_dynamics.extra;
+  if (before.empty() && after.empty()) return;
+  auto find = [](const std::vector<ExtraAxisTerm>& terms, int axis) -> const ExtraAxisTerm* {
+    for (const auto& t : terms)
+      if (t.axis == axis) return &t;
+    return nullptr;
+  };
+  for (const auto& b : before) {
+    const ExtraAxisTerm* a = find(after, b.axis);
+    const double dt = std::abs((a ? a->tangent : 0.0) - b.tangent);
+    if (dt > 1e-12) f(dt, b, a ? *a : b);
+  }
+  for (const auto& a : after) {
+    if (find(before, a.axis)) continue;
+    if (std::abs(a.tangent) > 1e-12) f(std::abs(a.tangent), a, a);
+  }
 }
+
+}  // namespace
 
 double FeedConstraint::max_velocity(const ElementDynamics& d, const CurvePoint&) const {
   return d.rapid ? kInf : d.feed;
@@ -19,6 +44,10 @@ double AxisVelocityConstraint::max_velocity(const ElementDynamics& d, const Curv
   for (int i = 0; i < 3; ++i) {
     const double t = std::abs(p.tangent[i]);
     if (t > 1e-12) v = std::min(v, d.axis_velocity[i] / t);
+  }
+  for (const ExtraAxisTerm& e : d.extra) {
+    const double t = std::abs(e.tangent);
+    if (t > 1e-12) v = std::min(v, e.velocity / t);
   }
   return v;
 }
@@ -59,8 +88,12 @@ double ExactStopConstraint::max_velocity(const Junction& j) const {
 
 double CornerConstraint::max_velocity(const Junction& j) const {
   const Vec3 jump = j.after_start.tangent - j.before_end.tangent;
-  if (jump.norm() < 1e-9) return kInf;  // tangent-continuous: no velocity jump on any axis
   double v = kInf;
+  const double ovl = std::min(j.before_dynamics.ovl_factor, j.after_dynamics.ovl_factor) - 1.0;
+  for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
+    v = std::min(v, std::min(before.raw_accel, after.raw_accel) * ovl * j.after_dynamics.ipo_cycle / dt);
+  });
+  if (jump.norm() < 1e-9) return v;  // tangent-continuous: no velocity jump on any geometry axis
   for (int i = 0; i < 3; ++i) {
     const double dt = std::abs(jump[i]);
     if (dt < 1e-12) continue;
@@ -75,9 +108,12 @@ double CornerConstraint::max_velocity(const Junction& j) const {
 double TransitionJerkConstraint::max_velocity(const Junction& j) const {
   if (!j.before_dynamics.soft || !j.after_dynamics.soft) return kInf;
   const Vec3 jump = j.after_start.tangent - j.before_end.tangent;
-  if (jump.norm() < 1e-9) return kInf;
   const double t = j.after_dynamics.ipo_cycle;
   double v = kInf;
+  for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
+    v = std::min(v, std::min(before.transition_jerk, after.transition_jerk) * t * t / dt);
+  });
+  if (jump.norm() < 1e-9) return v;
   for (int i = 0; i < 3; ++i) {
     const double dt = std::abs(jump[i]);
     if (dt < 1e-12) continue;

@@ -38,7 +38,7 @@ const PlanSummary& Planner::summary() const { return summary_; }
 void Planner::validate(const interp::PathElement& e) const {
   if (e.is_motion()) {
     if (!e.curve) raise(990020, "motion element without geometry", e);
-    const double length = e.curve->length();
+    const double length = e.path_length();
     if (!std::isfinite(length) || length < 0) raise(990020, "path length is not a finite number", e);
     if (!e.curve->start().allFinite() || !e.curve->end().allFinite())
       raise(990020, "path end points are not finite", e);
@@ -57,7 +57,7 @@ void Planner::consume(interp::PathElement element) {
     case interp::ElementKind::Line:
     case interp::ElementKind::Arc:
     case interp::ElementKind::SplineSpan:
-      if (element.curve->length() > 1e-9) {
+      if (element.path_length() > 1e-9) {
         append_motion(std::move(element));
       } else {
         append_passive(std::move(element));  // zero length: no motion, no corner
@@ -76,11 +76,23 @@ void Planner::consume(interp::PathElement element) {
       flush();
       account_pause(element, profile_.tool_change_time_s);
       break;
-    case interp::ElementKind::Stop:
+    case interp::ElementKind::Stop: {
       flush();
-      account_pause(element, 0.0);
+      // The program ends when every positioning axis is in position too.
+      const double ready = element.stop == interp::StopKind::ProgramEnd ? positioning_.wait({}) : 0.0;
+      account_pause(element, std::max(0.0, ready - clock_s_));
       if (element.stop == interp::StopKind::ProgramStop) seen_m0_ = true;
       break;
+    }
+    case interp::ElementKind::Positioning:
+      append_positioning(std::move(element));
+      break;
+    case interp::ElementKind::AxisWait: {
+      flush();
+      const double ready = positioning_.wait(element.wait_axes);
+      account_pause(element, std::max(0.0, ready - clock_s_));
+      break;
+    }
   }
 }
 
@@ -112,11 +124,39 @@ void Planner::append_passive(interp::PathElement element) {
   elements_.push_back(std::move(w));
 }
 
+void Planner::append_positioning(interp::PathElement element) {
+  const auto& moves = element.positioning;
+  const bool synchronous = std::any_of(moves.begin(), moves.end(), [](const auto& m) { return m.block_synchronous; });
+  if (!synchronous && !nodes_.empty()) {
+    append_passive(std::move(element));  // POSA starts when the path gets there (commit_front)
+    return;
+  }
+  if (synchronous) flush();
+  const double block_start = continues_block(element.source) ? block_start_s_ : clock_s_;
+  double ready = clock_s_;
+  for (const auto& m : moves) {
+    if (m.block_synchronous) ready = std::max(ready, block_start + PositioningAxes::move_time(m));
+    else positioning_.start(m, block_start);
+  }
+  account_pause(element, ready - clock_s_);
+}
+
+bool Planner::continues_block(const BlockRef& source) const {
+  return block_file_ && source.line == block_line_ && source.file == block_file_;
+}
+
+void Planner::note_block_start(const BlockRef& source) {
+  if (continues_block(source)) return;
+  block_start_s_ = clock_s_;
+  block_file_ = source.file;
+  block_line_ = source.line;
+}
+
 void Planner::append_motion(interp::PathElement element) {
   WindowElement& w = elements_.emplace_back();
   w.element = std::move(element);
   const geometry::Curve& curve = *w.element.curve;
-  const double length = curve.length();
+  const double length = w.element.path_length();
   w.dynamics = make_element_dynamics(w.element, length, profile_);
   const ElementDynamics& dyn = w.dynamics;
 
@@ -134,7 +174,7 @@ void Planner::append_motion(interp::PathElement element) {
     const double h = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
     n = static_cast<size_t>(std::clamp(std::ceil(length / h), 1.0, double(kMaxSegmentsPerElement)));
   }
-  const CurvePoint start = curve.at(0.0);
+  const CurvePoint start = path_point(dyn, curve, 0.0);
   VelocityBound start_bound = bound_at(start);
   RampLimits start_ramp = tangential_limits(dyn, start);
 
@@ -167,8 +207,7 @@ void Planner::append_motion(interp::PathElement element) {
   const double h = length / static_cast<double>(n);
   for (size_t k = 1; k <= n; ++k) {
     const double s = (k == n) ? length : h * static_cast<double>(k);
-    CurvePoint p = (n == 1) ? (w.element.kind == interp::ElementKind::Line ? curve.at(length) : curve.at(s))
-                            : curve.at(s);
+    CurvePoint p = path_point(dyn, curve, s);
     VelocityBound b = (w.element.kind == interp::ElementKind::Line) ? start_bound : bound_at(p);
     RampLimits r = (w.element.kind == interp::ElementKind::Line) ? start_ramp : tangential_limits(dyn, p);
     Segment seg;
@@ -248,6 +287,9 @@ void Planner::backward_pass(bool full) {
 void Planner::commit_front() {
   WindowElement& w = elements_.front();
   const interp::PathElement& e = w.element;
+  note_block_start(e.source);
+  if (e.kind == interp::ElementKind::Positioning)
+    for (const auto& m : e.positioning) positioning_.start(m, block_start_s_);
   BlockTiming timing;
   timing.rapid = e.rapid;
   timing.after_first_m0 = seen_m0_;
@@ -383,7 +425,7 @@ void Planner::emit_samples(const WindowElement& w, const Segment& seg, const Seg
     const double t = static_cast<double>(next_sample_) * profile_.ipo_cycle_s;
     if (t > end) break;
     const ProfileState st = evaluate(profile, t - clock_s_);
-    const CurvePoint p = w.element.curve->at(seg.s_start + st.s);
+    const CurvePoint p = path_point(w.dynamics, *w.element.curve, seg.s_start + st.s);
     TrajectorySample sample;
     sample.t_s = t;
     sample.position = p.position;

@@ -53,6 +53,15 @@
 //    adds dwell_s, ToolChange the profile's tool_change_time_s, M0 takes no time (the
 //    operator restarts) but starts the "after M0" clock.
 //
+// 7. Extra axes (docs/axes.md). A synchronized extra axis (rotary A/B/C ...) moves linearly
+//    along its element. The planner plans along the PATH LENGTH (PathElement::path_length:
+//    the feed group's length, FGROUP), so the geometry's derivatives are scaled by
+//    geometry_scale = curve length / path length (path_point) and each extra axis adds the
+//    constant share t = travel / path length to the axis-velocity, tangential-acceleration,
+//    jerk and corner rules above. Positioning axes (POS/POSA/SPOS, WAITP/WAITS) run beside the
+//    path on their own interpolators (positioning_axes.hpp): POS flushes and waits, POSA starts
+//    when the path reaches its block and is waited for at WAITP, a new programming or M30.
+//
 // Guarantees (tests/motion/planner_property_test.cpp): on lines every IPO sample keeps each
 // axis velocity and acceleration within 1e-6 of its limit; on arcs the limits hold at the
 // nodes and samples between them stay within 2 %. Jerk is limited inside each closed-form
@@ -69,6 +78,7 @@
 #include "motion/feed_dip_collector.hpp"
 #include "motion/path_constraints.hpp"
 #include "motion/plan_result.hpp"
+#include "motion/positioning_axes.hpp"
 #include "motion/velocity_ramp.hpp"
 
 namespace drycut::motion {
@@ -114,6 +124,10 @@ class Planner : public interp::ElementSink {
 
   void append_motion(interp::PathElement element);
   void append_passive(interp::PathElement element);
+  void append_positioning(interp::PathElement element);
+  // The run clock when the block of the element being committed started (POS/POSA timing).
+  bool continues_block(const BlockRef& source) const;
+  void note_block_start(const BlockRef& source);
   void backward_pass(bool full);
   void commit_front();
   void flush();
@@ -153,6 +167,10 @@ class Planner : public interp::ElementSink {
   size_t peak_elements_ = 0;
   FeedDipCollector dips_;
   PlanSummary summary_;
+  PositioningAxes positioning_;
+  double block_start_s_ = 0;
+  std::shared_ptr<const std::string> block_file_;
+  uint32_t block_line_ = 0;
 };
 
 }  // namespace drycut::motion

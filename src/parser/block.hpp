@@ -14,8 +14,9 @@
 
 namespace drycut::parser {
 
-// How an address value was written: plain `X5`, or `X=AC(5)` / `X=IC(5)`.
-enum class ValueMode : uint8_t { Default, Absolute, Incremental };
+// How an address value was written: plain `X5`, `X=AC(5)` / `X=IC(5)`, or for a rotary axis
+// `C=DC(5)` (the shortest way), `C=ACP(5)` / `C=ACN(5)` (absolute, positive / negative way).
+enum class ValueMode : uint8_t { Default, Absolute, Incremental, Direct, AbsolutePositive, AbsoluteNegative };
 
 // An address with a numeric value: axis words X Y Z A B C, circle I J K I1 J1 K1, F S D H,
 // T<n>, and the extended addresses PW SD PL CR AR TURN AP RP ... Name is upper case.
@@ -58,6 +59,18 @@ struct SystemWrite {
   uint32_t column = 0;
 };
 
+// Positioning-axis words (PGA Fundamentals "Traversing positioning axes"; Spindle SPOS):
+// POS[ax]= and POSA[ax]= move an axis on its own interpolator, SPOS=/SPOSA= position the
+// spindle, FA[ax]= sets a positioning axis's feed.
+enum class AxisWordKind : uint8_t { Pos, PosA, SPos, SPosA, AxialFeed };
+struct AxisWord {
+  AxisWordKind kind = AxisWordKind::Pos;
+  std::string axis;  // upper case; the spindle number as text for SPOS[n] ("1" for SPOS=)
+  double value = 0.0;
+  ValueMode mode = ValueMode::Default;
+  uint32_t column = 0;
+};
+
 // PROC ... SAVE: the subprogram's first block asks the interpreter to keep its modal state,
 // the block after the return to restore it (PGA Job Planning, "SAVE").
 enum class ModalSave : uint8_t { None, Save, Restore };
@@ -74,6 +87,7 @@ struct Block {
   std::vector<CommandWord> commands;
   std::optional<std::string> tool_name;  // T="name" (case preserved)
   std::vector<SystemWrite> system_writes;
+  std::vector<AxisWord> axis_words;
   ModalSave modal_save = ModalSave::None;
 
   // Empties the block but keeps the vectors' capacity (the loader reuses one Block).
@@ -89,6 +103,7 @@ struct Block {
     commands.clear();
     tool_name.reset();
     system_writes.clear();
+    axis_words.clear();
     modal_save = ModalSave::None;
   }
 

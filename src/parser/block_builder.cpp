@@ -4,6 +4,8 @@
 // subprogram call (by name, L number or with arguments) with P passes.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <tuple>
 
 #include "parser/command_table.hpp"
 #include "parser/expression_parser.hpp"
@@ -75,28 +77,55 @@ class ProgramLoader::BlockBuilder {
     has_words_ = true;
   }
 
-  // X=R1*2, X=AC(5), X=IC(-1), C=DC(0), A=ACP(90)
-  void address_value(std::string name, const Item& item) {
+  // X=R1*2, X=AC(5), X=IC(-1), C=DC(0), A=ACP(90): the value and how it was written.
+  std::pair<double, ValueMode> moded_value(const Item& item) {
     const ExprNode& top = l_.parsed_.pool[item.expr];
     ValueMode mode = ValueMode::Default;
-    ExprIndex value_expr = item.expr;
     if (top.op == ExprOp::Call) {
       switch (top.func) {
         case Function::AbsoluteMode: mode = ValueMode::Absolute; break;
         case Function::IncrementalMode: mode = ValueMode::Incremental; break;
-        case Function::DirectMode:
-        case Function::AbsolutePositive:
-        case Function::AbsoluteNegative:
-          // Rotary positioning by direction: the end position is the same absolute value.
-          l_.warn_not_modelled(std::string(top.text) + "() direction of a rotary axis (taken as AC)", top.column);
-          mode = ValueMode::Absolute;
-          break;
+        case Function::DirectMode: mode = ValueMode::Direct; break;
+        case Function::AbsolutePositive: mode = ValueMode::AbsolutePositive; break;
+        case Function::AbsoluteNegative: mode = ValueMode::AbsoluteNegative; break;
         default: break;
       }
-      if (mode != ValueMode::Default) value_expr = l_.parsed_.pool.args[top.a];
+      if (mode != ValueMode::Default) return {l_.eval(l_.parsed_.pool.args[top.a]), mode};
     }
-    out_.addresses.push_back(AddressWord{std::move(name), l_.eval(value_expr), mode, item.column});
+    return {l_.eval(item.expr), mode};
+  }
+
+  void address_value(std::string name, const Item& item) {
+    const auto [value, mode] = moded_value(item);
+    out_.addresses.push_back(AddressWord{std::move(name), value, mode, item.column});
     has_words_ = true;
+  }
+
+  // POS[A]=90, POSA[C]=ACP(0), FA[A]=3600, SPOS=0, SPOS[2]=IC(90), SPOSA=180.
+  bool axis_word(const Item& item) {
+    static constexpr std::pair<std::string_view, AxisWordKind> kWords[] = {
+        {"POS", AxisWordKind::Pos}, {"POSA", AxisWordKind::PosA}, {"FA", AxisWordKind::AxialFeed},
+        {"SPOS", AxisWordKind::SPos}, {"SPOSA", AxisWordKind::SPosA}};
+    const auto* hit = std::find_if(std::begin(kWords), std::end(kWords), [&](const auto& w) { return w.first == item.name; });
+    if (hit == std::end(kWords)) return false;
+    const bool spindle = hit->second == AxisWordKind::SPos || hit->second == AxisWordKind::SPosA;
+    AxisWord w;
+    w.kind = hit->second;
+    w.column = item.column;
+    if (item.index_count == 1) {
+      const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+      if (spindle) w.axis = number_to_text(as_number(index, item.column));
+      else if (index.kind == ValueKind::Axis || index.is_text()) w.axis = index.text;
+      else throw LineError(12150, item.column, std::string(item.name) + "[...] needs an axis");
+    } else if (item.index_count == 0 && spindle) {
+      w.axis = "1";  // the master spindle
+    } else {
+      throw LineError(12410, item.column, std::string(item.name) + "[...] takes one axis");
+    }
+    std::tie(w.value, w.mode) = moded_value(item);
+    out_.axis_words.push_back(std::move(w));
+    has_words_ = true;
+    return true;
   }
 
   void assignment(const Item& item) {
@@ -124,8 +153,9 @@ class ProgramLoader::BlockBuilder {
       l_.assign_r_parameter(std::stod(std::string(item.name.substr(1))), l_.eval(item.expr), item.column);
       return;
     }
+    if (axis_word(item)) return;
     if (!is_address(item.name)) {
-      // OVR=50, FA[X]=100, POS[X]=10, SPOS=0, CTOL=0.01: valid settings drycut does not model.
+      // OVR=50, CTOL=0.01: valid settings drycut does not model.
       const Support s = command_support(item.name);
       if (s == Support::NotModelled) {
         l_.warn_not_modelled(std::string(item.name) + "=", item.column);

@@ -15,6 +15,8 @@ const char* kind_name(interp::ElementKind kind) {
     case interp::ElementKind::Stop: return "STOP";
     case interp::ElementKind::ToolChange: return "TOOL";
     case interp::ElementKind::DynamicsChange: return "DYNAMICS";
+    case interp::ElementKind::Positioning: return "POSITION";
+    case interp::ElementKind::AxisWait: return "WAIT";
   }
   return "?";
 }
@@ -47,8 +49,11 @@ void ElementListingWriter::consume(interp::PathElement e) {
     if (e.compensation.side != interp::CompensationSide::None)
       std::fprintf(out_, " %s r=%.3f", e.compensation.side == interp::CompensationSide::Left ? "G41" : "G42",
                    e.compensation.radius_mm);
+    for (const auto& m : e.extra_axes) std::fprintf(out_, " %s %.3f%+.3f", m.name.c_str(), clean(m.start), clean(m.travel));
   } else if (e.kind == interp::ElementKind::Dwell) {
     std::fprintf(out_, " %.3f s", e.dwell_s);
+  } else if (e.kind == interp::ElementKind::Positioning) {
+    for (const auto& m : e.positioning) std::fprintf(out_, " %s %.3f", m.axis.c_str(), m.travel);
   } else if (e.kind == interp::ElementKind::DynamicsChange) {
     std::fprintf(out_, " %s %s", transition_name(e.dynamics.transition),
                  e.dynamics.profile == interp::AccelProfile::Soft ? "SOFT" : "BRISK");

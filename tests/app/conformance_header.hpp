@@ -7,6 +7,7 @@
 //   ; expect-end: X10 Y20 Z5          -- machine position after the last motion (any of X Y Z)
 //   ; expect-time: 12.5 tol 0.01      -- `run` total time in s, absolute tolerance
 //   ; expect-listing: NAME.elements   -- expected `drycut path --elements` output beside it
+//   ; profile: NAME.json              -- machine profile beside it (default: the embedded one)
 // The header is the run of lines before the first program line: comments, blank lines and a
 // leading `%_N_..` file line. Other comment lines in it (the hand computation) are free text,
 // and a rule may go on over the following comment lines up to the next directive; the rule
@@ -35,6 +36,7 @@ struct ConformanceSpec {
   std::optional<double> time_s;
   double time_tolerance_s = 0;
   std::string listing;  // file name beside the program, empty = none
+  std::string profile;  // machine profile file beside the program, empty = the embedded one
 };
 
 namespace conformance_detail {
@@ -92,7 +94,7 @@ inline std::string lower(std::string s) {
 // A key drycut's harness owns: `rule` or anything starting with `expect`, in any case.
 inline bool looks_like_directive(const std::string& key) {
   const std::string k = lower(key);
-  return k == "rule" || k.rfind("expect", 0) == 0;
+  return k == "rule" || k == "profile" || k.rfind("expect", 0) == 0;
 }
 
 inline bool parse_expect(const std::string& value, ConformanceSpec& spec, std::string& error) {
@@ -174,8 +176,16 @@ inline bool apply_directive(const std::string& key, const std::string& value, Co
     spec.listing = value;
     return true;
   }
+  if (key == "profile") {
+    if (value.empty() || words(value).size() != 1 || value.find('/') != std::string::npos) {
+      error = "profile: must be one file name beside the program, not '" + value + "'";
+      return false;
+    }
+    spec.profile = value;
+    return true;
+  }
   error = "unknown directive '" + key + ":' (known: rule, expect, expect-warning, expect-end, expect-time, "
-          "expect-listing)";
+          "expect-listing, profile)";
   return false;
 }
 

@@ -9,6 +9,7 @@
 // (summary.end_position_mm, tolerance 1e-4 mm) and takes `expect-time:`, that the summary's
 // complete/stopped_at agree with the outcome, and with `expect-listing:` that
 // `drycut path NAME --elements` prints the listing file (lines starting with '#' are comments).
+// With `profile:` every command gets `--machine FILE` (a machine profile beside the program).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -169,7 +170,8 @@ TEST_P(Conformance, Program) {
   SCOPED_TRACE(GetParam() + "\nrule: " + spec.rule);
 
   // check: JSON on stdout (alarms and warnings in it), the stderr copy dropped.
-  const CliRun check = run_shell(in_folder(program, "check", "--json 2>/dev/null"));
+  const std::string profile = spec.profile.empty() ? "" : "--machine " + quoted(fs::path(spec.profile)) + " ";
+  const CliRun check = run_shell(in_folder(program, "check", profile + "--json 2>/dev/null"));
   json check_json;
   ASSERT_NO_THROW(check_json = json::parse(check.out)) << "check printed no JSON:\n" << check.out.substr(0, 2000);
   expect_outcome("drycut check", outcome_of(check.exit_code, check_json.value("alarms", json::array())), spec);
@@ -178,7 +180,7 @@ TEST_P(Conformance, Program) {
   const fs::path report = fs::temp_directory_path() / ("drycut_conformance_" + std::to_string(::getpid()) + "_" +
                                                        sanitized(GetParam()) + ".json");
   const RemovedAtEnd report_file{report};
-  const CliRun run = run_shell(in_folder(program, "run", "-q --json " + quoted(report) + " 2>&1"));
+  const CliRun run = run_shell(in_folder(program, "run", profile + "-q --json " + quoted(report) + " 2>&1"));
   SCOPED_TRACE("drycut run said:\n" + run.out.substr(0, 2000));
   json run_json;
   {
@@ -204,7 +206,7 @@ TEST_P(Conformance, Program) {
   if (!spec.listing.empty()) {
     const fs::path listing = program.parent_path() / spec.listing;
     ASSERT_TRUE(fs::exists(listing)) << "expect-listing names a missing file " << listing;
-    const CliRun path = run_shell(in_folder(program, "path", "--elements 2>/dev/null"));
+    const CliRun path = run_shell(in_folder(program, "path", profile + "--elements 2>/dev/null"));
     EXPECT_EQ(path.out, expected_listing(listing)) << "drycut path --elements differs from " << spec.listing;
   }
 }

@@ -1,0 +1,126 @@
+#include "interp/extra_axes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace drycut::interp {
+namespace {
+
+using parser::ValueMode;
+
+// x reduced into [0, range).
+double wrap(double x, double range) {
+  double r = std::fmod(x, range);
+  if (r < 0) r += range;
+  return r >= range ? 0.0 : r;
+}
+
+bool is_direction_mode(ValueMode mode) {
+  return mode == ValueMode::Direct || mode == ValueMode::AbsolutePositive || mode == ValueMode::AbsoluteNegative;
+}
+
+const char* mode_name(ValueMode mode) {
+  switch (mode) {
+    case ValueMode::Direct: return "DC";
+    case ValueMode::AbsolutePositive: return "ACP";
+    default: return "ACN";
+  }
+}
+
+// From position p to target t (both in [0, range)) the way the mode chooses.
+double way(double p, double t, double range, ValueMode mode) {
+  double d = t - p;
+  switch (mode) {
+    case ValueMode::AbsolutePositive: return d < 0 ? d + range : d;
+    case ValueMode::AbsoluteNegative: return d > 0 ? d - range : d;
+    case ValueMode::Direct:
+      if (d > range / 2) d -= range;
+      if (d <= -range / 2) d += range;
+      return d;
+    default: return d;  // AC inside the range: like a linear axis
+  }
+}
+
+}  // namespace
+
+ExtraAxes::ExtraAxes(const machine::MachineProfile& profile)
+    : axes_(profile.extra_axes),
+      position_(axes_.size(), 0.0),
+      in_group_(axes_.size(), false),
+      positioning_feed_(axes_.size(), 0.0) {
+  for (size_t i = 0; i < axes_.size(); ++i) positioning_feed_[i] = axes_[i].pos_velocity_mm_s;
+}
+
+int ExtraAxes::index(std::string_view name) const {
+  for (size_t i = 0; i < axes_.size(); ++i)
+    if (axes_[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+ExtraAxes::Travel ExtraAxes::travel_to(size_t i, double value, ValueMode mode, bool absolute, double unit) const {
+  const machine::AxisData& a = axes_[i];
+  const double p = position_[i];
+  Travel t;
+  if (is_direction_mode(mode)) {
+    if (!a.rotary) {
+      t.alarm = mode == ValueMode::Direct ? 16800 : mode == ValueMode::AbsolutePositive ? 16810 : 16820;
+      t.detail = std::string(mode_name(mode)) + " on the linear axis " + a.name;
+      return t;
+    }
+    const double range = a.modulo ? a.modulo_range : 360.0;
+    if (a.modulo && !(value >= 0 && value < range)) {
+      t.alarm = 16830;
+      t.detail = a.name + "=" + mode_name(mode) + "(" + std::to_string(value) + "): modulo position outside 0 .. " +
+                 std::to_string(range);
+      return t;
+    }
+    t.travel = way(wrap(p, range), wrap(value, range), range, mode);
+    return t;
+  }
+  const double scale = a.rotary ? 1.0 : unit;
+  const bool incremental = mode == ValueMode::Incremental || (mode == ValueMode::Default && !absolute);
+  if (incremental) {
+    t.travel = value * scale;
+  } else if (a.modulo) {
+    const bool shortest = (a.misc_function_mask & 0x4) != 0;
+    t.travel = way(p, wrap(value, a.modulo_range), a.modulo_range, shortest ? ValueMode::Direct : ValueMode::Absolute);
+  } else {
+    t.travel = value * scale - p;
+  }
+  return t;
+}
+
+void ExtraAxes::move(size_t i, double travel) {
+  const machine::AxisData& a = axes_[i];
+  position_[i] = a.modulo ? wrap(position_[i] + travel, a.modulo_range) : position_[i] + travel;
+}
+
+std::string ExtraAxes::set_feed_group(const std::vector<std::string>& names) {
+  std::fill(in_group_.begin(), in_group_.end(), false);
+  geometry_in_group_ = names.empty();
+  for (const auto& n : names) {
+    if (n == "X" || n == "Y" || n == "Z") {
+      geometry_in_group_ = true;
+    } else if (const int k = index(n); k >= 0) {
+      in_group_[static_cast<size_t>(k)] = true;
+    } else if (!n.empty()) {
+      return n;
+    }
+  }
+  if (std::none_of(in_group_.begin(), in_group_.end(), [](bool b) { return b; })) geometry_in_group_ = true;
+  return {};
+}
+
+void ExtraAxes::mark_running(const std::string& axis) {
+  if (!running(axis)) running_.push_back(axis);
+}
+
+bool ExtraAxes::running(const std::string& axis) const {
+  return std::find(running_.begin(), running_.end(), axis) != running_.end();
+}
+
+void ExtraAxes::clear_running(const std::string& axis) {
+  running_.erase(std::remove(running_.begin(), running_.end(), axis), running_.end());
+}
+
+}  // namespace drycut::interp

@@ -1,0 +1,228 @@
+// Channel axes beyond X, Y, Z: synchronized axes that move with the path (A=, C=DC(..)),
+// positioning axes on their own interpolators (POS/POSA, SPOS/SPOSA), their feeds (FA, FGROUP)
+// and waits (WAITP/WAITS). The rules are in extra_axes.hpp and docs/axes.md.
+#include <algorithm>
+#include <cmath>
+
+#include "interp/interpreter.hpp"
+#include "interp/interpreter_block.hpp"
+
+namespace drycut::interp {
+
+using parser::AddressWord;
+using parser::AxisWord;
+using parser::AxisWordKind;
+using parser::ValueMode;
+using namespace detail;
+
+namespace {
+
+bool is_axis_letter_name(std::string_view n) {
+  return n.size() == 1 && std::string_view("ABCUVW").find(n[0]) != std::string_view::npos;
+}
+
+double wrap_turn(double degrees) {
+  const double r = std::fmod(degrees, 360.0);
+  return r < 0 ? r + 360.0 : r;
+}
+
+std::vector<std::string> text_args(const parser::CommandWord& c) {
+  std::vector<std::string> out;
+  for (const auto& a : c.args)
+    if (const auto* s = std::get_if<std::string>(&a)) out.push_back(*s);
+    else out.push_back(std::to_string(static_cast<long long>(std::get<double>(a))));
+  return out;
+}
+
+}  // namespace
+
+bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) {
+  if (const int i = extra_axes_.index(a.name); i >= 0) {
+    ctx.extra_words.emplace_back(static_cast<size_t>(i), &a);
+    // An axis still on its way from POSA: the block waits for it first (implicit WAITP).
+    if (extra_axes_.running(a.name)) {
+      ctx.waits.push_back(a.name);
+      extra_axes_.clear_running(a.name);
+    }
+    return true;
+  }
+  if (is_axis_letter_name(a.name)) {
+    warn_once(ctx, "axis " + a.name + " is not in the machine profile (its moves are not simulated)", a.column);
+    return true;
+  }
+  return false;
+}
+
+bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWord& c) {
+  if (c.name == "FGROUP") {
+    std::vector<std::string> names;
+    for (auto& n : text_args(c)) {
+      if (!n.empty() && axis_index(n) < 0 && extra_axes_.index(n) < 0 && is_axis_letter_name(n))
+        warn_once(ctx, "FGROUP: axis " + n + " is not in the machine profile", c.column);
+      else
+        names.push_back(std::move(n));
+    }
+    const std::string bad = extra_axes_.set_feed_group(names);
+    if (!bad.empty()) raise(ctx, 12550, "FGROUP: " + bad + " is not an axis of the channel", c.column);
+    return true;
+  }
+  if (c.name == "WAITP") {
+    if (c.args.empty()) raise(ctx, 12080, "WAITP needs an axis", c.column);
+    for (const auto& axis : text_args(c)) {
+      if (extra_axes_.index(axis) < 0 && axis_index(axis) < 0) {
+        if (!is_axis_letter_name(axis)) raise(ctx, 12550, "WAITP: " + axis + " is not an axis of the channel", c.column);
+        warn_once(ctx, "WAITP: axis " + axis + " is not in the machine profile", c.column);
+        continue;
+      }
+      ctx.waits.push_back(axis);
+      extra_axes_.clear_running(axis);
+    }
+    return true;
+  }
+  if (c.name == "WAITS") {
+    // WAITS: the master spindle; WAITS(n, ...): those spindles.
+    const auto args = text_args(c);
+    if (args.empty() || (args.size() == 1 && args[0].empty())) ctx.waits.push_back("S1");
+    for (const auto& n : args)
+      if (!n.empty()) ctx.waits.push_back("S" + n);
+    return true;
+  }
+  return false;
+}
+
+void Interpreter::apply_axis_words(BlockContext& ctx) {
+  for (const AxisWord& w : ctx.block.axis_words) {
+    switch (w.kind) {
+      case AxisWordKind::AxialFeed: {
+        const int i = extra_axes_.index(w.axis);
+        if (i < 0) {
+          if (axis_index(w.axis) < 0) raise(ctx, 12550, "FA[" + w.axis + "]: not an axis of the channel", w.column);
+          warn_once(ctx, "FA[" + w.axis + "] (a geometry axis as positioning axis is not modelled)", w.column);
+          continue;
+        }
+        if (!(w.value > 0)) raise(ctx, 14800, "FA[" + w.axis + "] must be > 0", w.column);
+        const bool rotary = extra_axes_.data(static_cast<size_t>(i)).rotary;
+        extra_axes_.set_positioning_feed(static_cast<size_t>(i), w.value / 60.0 * (rotary ? 1.0 : feed_unit()));
+        break;
+      }
+      case AxisWordKind::Pos:
+      case AxisWordKind::PosA: add_positioning(ctx, w); break;
+      case AxisWordKind::SPos:
+      case AxisWordKind::SPosA: add_spindle_positioning(ctx, w); break;
+    }
+  }
+}
+
+void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
+  const int k = extra_axes_.index(w.axis);
+  if (k < 0) {
+    if (axis_index(w.axis) < 0 && !is_axis_letter_name(w.axis))
+      raise(ctx, 12550, "POS[" + w.axis + "]: not an axis of the channel", w.column);
+    warn_once(ctx, std::string(w.kind == AxisWordKind::Pos ? "POS" : "POSA") + "[" + w.axis +
+                       "] (a positioning move of an axis drycut does not simulate; it does not move)", w.column);
+    return;
+  }
+  const size_t i = static_cast<size_t>(k);
+  if (extra_axes_.running(w.axis)) {  // programmed again while its POSA runs: wait first
+    ctx.waits.push_back(w.axis);
+    extra_axes_.clear_running(w.axis);
+  }
+  const ExtraAxes::Travel t = extra_axes_.travel_to(i, w.value, w.mode, state_.absolute, geometry_unit());
+  if (t.alarm != 0) raise(ctx, t.alarm, t.detail, w.column);
+  const machine::AxisData& a = extra_axes_.data(i);
+  const double end = extra_axes_.position(i) + t.travel;
+  if (!a.modulo && (end < a.min_mm - 1e-9 || end > a.max_mm + 1e-9))
+    raise(ctx, 10720, "axis " + a.name + " at " + std::to_string(end) + ", limits " + std::to_string(a.min_mm) +
+                          " .. " + std::to_string(a.max_mm), w.column);
+  extra_axes_.move(i, t.travel);
+  PositioningMove m;
+  m.axis = w.axis;
+  m.travel = std::abs(t.travel);
+  m.velocity = std::min(extra_axes_.positioning_feed(i), a.max_velocity_mm_s);
+  m.accel = a.max_accel_mm_s2;
+  m.block_synchronous = w.kind == AxisWordKind::Pos;
+  if (!m.block_synchronous) extra_axes_.mark_running(w.axis);
+  ctx.positioning.push_back(std::move(m));
+}
+
+void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) {
+  // The master spindle (S1) is simulated; the others take the same machine data.
+  const std::string name = "S" + w.axis;
+  if (extra_axes_.running(name)) {
+    ctx.waits.push_back(name);
+    extra_axes_.clear_running(name);
+  }
+  constexpr double kTurn = 360.0;
+  const bool turning = state_.spindle != SpindleState::Stopped && state_.spindle_rpm > 0;
+  PositioningMove m;
+  m.axis = name;
+  m.velocity = profile_.spindle_posctrl_velo_rpm * kTurn / 60.0;
+  m.accel = profile_.spindle_posctrl_accel_rev_s2 * kTurn;
+  if (w.mode == ValueMode::Incremental) {
+    m.travel = std::abs(w.value);
+  } else if (turning) {
+    // From rotation the spindle brakes to the positioning speed, finds its position and turns on
+    // in its direction: where it stands is unknown in a dry run, so half a turn is taken.
+    const double brake_rev_s = std::max(0.0, state_.spindle_rpm - profile_.spindle_posctrl_velo_rpm) / 60.0;
+    m.lead_time_s = brake_rev_s / profile_.spindle_speedctrl_accel_rev_s2;
+    m.travel = kTurn / 2;
+  } else {
+    const ValueMode mode = w.mode == ValueMode::Default || w.mode == ValueMode::Absolute ? ValueMode::Direct : w.mode;
+    double d = wrap_turn(w.value) - spindle_angle_;
+    if (d < 0) d += kTurn;  // now the positive way in [0, 360)
+    if (mode == ValueMode::AbsoluteNegative && d > 0) d = kTurn - d;
+    if (mode == ValueMode::Direct && d > kTurn / 2) d = kTurn - d;
+    m.travel = d;
+  }
+  spindle_angle_ = wrap_turn(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value);
+  state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
+  m.block_synchronous = w.kind == AxisWordKind::SPos;
+  if (!m.block_synchronous) extra_axes_.mark_running(name);
+  ctx.positioning.push_back(std::move(m));
+}
+
+std::vector<ExtraAxisMove> Interpreter::take_extra_axis_moves(BlockContext& ctx) {
+  std::vector<ExtraAxisMove> moves;
+  for (const auto& [i, word] : ctx.extra_words) {
+    const ExtraAxes::Travel t = extra_axes_.travel_to(i, word->value, word->mode, state_.absolute, geometry_unit());
+    if (t.alarm != 0) raise(ctx, t.alarm, t.detail, word->column);
+    const machine::AxisData& a = extra_axes_.data(i);
+    const double start = extra_axes_.position(i);
+    if (!a.modulo && (start + t.travel < a.min_mm - 1e-9 || start + t.travel > a.max_mm + 1e-9))
+      raise(ctx, 10720, "axis " + a.name + " at " + std::to_string(start + t.travel) + ", limits " +
+                            std::to_string(a.min_mm) + " .. " + std::to_string(a.max_mm), word->column);
+    extra_axes_.move(i, t.travel);
+    if (std::abs(t.travel) > 0) moves.push_back({static_cast<int>(i), a.name, start, t.travel, extra_axes_.in_feed_group(i)});
+  }
+  return moves;
+}
+
+void Interpreter::attach_extra_axes(BlockContext& ctx, PathElement& e, std::vector<ExtraAxisMove> moves) {
+  if (moves.empty()) return;
+  e.extra_axes = std::move(moves);
+  e.geometry_in_feed_group = extra_axes_.geometry_in_feed_group();
+  // F refers to the feed group's length (G93: the block time fills the whole length).
+  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), e.curve->end() - e.curve->start());
+}
+
+void Interpreter::emit_axis_waits(BlockContext& ctx) {
+  if (ctx.waits.empty() && !ctx.wait_all) return;
+  PathElement e = element_template(ctx, ElementKind::AxisWait);
+  e.wait_axes = std::move(ctx.waits);
+  e.label = "WAIT";
+  for (const auto& a : e.wait_axes) e.label += " " + a;
+  ctx.waits.clear();
+  emit(std::move(e));
+}
+
+void Interpreter::emit_positioning(BlockContext& ctx) {
+  if (ctx.positioning.empty()) return;
+  PathElement e = element_template(ctx, ElementKind::Positioning);
+  e.label = ctx.positioning.front().block_synchronous ? "POS" : "POSA";
+  for (const auto& m : ctx.positioning) e.label += " " + m.axis;
+  e.positioning = std::move(ctx.positioning);
+  ctx.positioning.clear();
+  emit(std::move(e));
+}
+
+}  // namespace drycut::interp
