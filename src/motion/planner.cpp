@@ -142,12 +142,13 @@ void Planner::append_positioning(interp::PathElement element) {
 }
 
 bool Planner::continues_block(const BlockRef& source) const {
-  return block_file_ && source.line == block_line_ && source.file == block_file_;
+  return block_known_ && source.line == block_line_ && source.file == block_file_;
 }
 
 void Planner::note_block_start(const BlockRef& source) {
   if (continues_block(source)) return;
   block_start_s_ = clock_s_;
+  block_known_ = true;
   block_file_ = source.file;
   block_line_ = source.line;
 }

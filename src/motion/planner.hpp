@@ -169,6 +169,7 @@ class Planner : public interp::ElementSink {
   PlanSummary summary_;
   PositioningAxes positioning_;
   double block_start_s_ = 0;
+  bool block_known_ = false;
   std::shared_ptr<const std::string> block_file_;
   uint32_t block_line_ = 0;
 };

@@ -138,6 +138,59 @@ TEST(LoadProfile, RoundTripKeepsEveryField) {
   EXPECT_EQ(b.tools[0].edges[0].length_mm, 50.0);
 }
 
+// Further axes by name (docs/axes.md): rotary ones in degrees, units converted like X's.
+json profile_with_extra_axes() {
+  json j = small_profile();
+  j["axes"]["C"] = json::parse(R"({"rotary": true, "modulo": true, "max_velocity_rev_min": 20,
+      "max_accel_deg_s2": 600, "max_jerk_rev_s3": 10, "pos_velocity_deg_s": 30, "misc_function_mask": 4})");
+  j["axes"]["A"] = json::parse(R"({"rotary": true, "min_deg": -120, "max_deg": 30, "max_velocity_deg_min": 3600,
+      "max_accel_deg_s2": 300, "max_jerk_deg_s3": 3000})");
+  j["axes"]["U"] = json::parse(R"({"min_mm": -50, "max_mm": 50, "max_velocity_m_min": 6, "max_accel_m_s2": 2,
+      "max_jerk_m_s3": 50})");
+  return j;
+}
+
+TEST(LoadProfile, ReadsExtraAxesInNameOrderWithAngularUnits) {
+  MachineProfile p = load_profile_json(profile_with_extra_axes().dump(), "t");
+  ASSERT_EQ(p.extra_axes.size(), 3u);
+  EXPECT_EQ(p.extra_axes[0].name, "A");
+  EXPECT_EQ(p.extra_axes[1].name, "C");
+  EXPECT_EQ(p.extra_axes[2].name, "U");
+  EXPECT_EQ(p.extra_axis_index("C"), 1);
+  EXPECT_EQ(p.extra_axis_index("B"), -1);
+  const AxisData& c = p.extra_axes[1];
+  EXPECT_TRUE(c.rotary);
+  EXPECT_TRUE(c.modulo);
+  EXPECT_DOUBLE_EQ(c.modulo_range, 360.0);
+  EXPECT_DOUBLE_EQ(c.max_velocity_mm_s, 120.0);   // 20 rev/min = 7200 deg/min = 120 deg/s
+  EXPECT_DOUBLE_EQ(c.max_jerk_mm_s3, 3600.0);     // 10 rev/s^3
+  EXPECT_DOUBLE_EQ(c.pos_velocity_mm_s, 30.0);
+  EXPECT_EQ(c.misc_function_mask, 4);
+  EXPECT_DOUBLE_EQ(p.extra_axes[0].min_mm, -120.0);
+  EXPECT_DOUBLE_EQ(p.extra_axes[0].max_velocity_mm_s, 60.0);
+  EXPECT_FALSE(p.extra_axes[2].rotary);
+  EXPECT_DOUBLE_EQ(p.extra_axes[2].max_velocity_mm_s, 100.0);  // 6 m/min
+  EXPECT_DOUBLE_EQ(p.extra_axes[2].pos_velocity_mm_s, 10000.0 / 60.0);  // MD32060 default
+}
+
+TEST(LoadProfile, ExtraAxesRoundTrip) {
+  MachineProfile a = load_profile_json(profile_with_extra_axes().dump(), "t");
+  MachineProfile b = load_profile_json(profile_to_json(a), "round trip");
+  ASSERT_EQ(a.extra_axes.size(), b.extra_axes.size());
+  for (size_t i = 0; i < a.extra_axes.size(); ++i) {
+    const AxisData &x = a.extra_axes[i], &y = b.extra_axes[i];
+    EXPECT_EQ(x.name, y.name);
+    EXPECT_EQ(x.rotary, y.rotary);
+    EXPECT_EQ(x.modulo, y.modulo);
+    EXPECT_EQ(x.misc_function_mask, y.misc_function_mask);
+    EXPECT_NEAR(x.min_mm, y.min_mm, 1e-9);
+    EXPECT_NEAR(x.max_velocity_mm_s, y.max_velocity_mm_s, 1e-9);
+    EXPECT_NEAR(x.max_accel_mm_s2, y.max_accel_mm_s2, 1e-9);
+    EXPECT_NEAR(x.max_jerk_mm_s3, y.max_jerk_mm_s3, 1e-6);
+    EXPECT_NEAR(x.pos_velocity_mm_s, y.pos_velocity_mm_s, 1e-9);
+  }
+}
+
 TEST(LoadProfile, DefaultRoundTrips) {
   MachineProfile b = load_profile_json(profile_to_json(default_profile()), "rt");
   EXPECT_EQ(b.tools.size(), default_profile().tools.size());
@@ -178,7 +231,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"/axes/X/max_velocity_mm_s", "<erase>", "axes.X.max_velocity: missing"},
         BadCase{"/axes/X/min_mm", "30", "axes.X.min: must be < max"},
         BadCase{"/axes/Y", "<erase>", "axes.Y: missing"},
-        BadCase{"/axes/A", "{}", "axes.A: unknown key"},
+        // A further axis is named by its key and needs its limits like X (docs/axes.md).
+        BadCase{"/axes/A", "{}", "axes.A.max_velocity: missing"},
+        BadCase{"/axes/a1", "{}", "axes.a1: an axis name is upper-case letters and digits"},
+        BadCase{"/axes/X/rotary", "true", "axes.X.rotary: the geometry axes X, Y, Z are linear"},
+        BadCase{"/axes/X/modulo", "true", "axes.X.modulo: only a rotary axis can be a modulo axis"},
         BadCase{"/axes", "<erase>", "axes: missing"},
         BadCase{"/path/ipo_cycle_ms", "0", "path.ipo_cycle: must be > 0"},
         BadCase{"/path/ipo_cycle_us", "4", "path.ipo_cycle_us: unknown unit 'us'"},

@@ -1,0 +1,120 @@
+// Planner with synchronized extra axes and positioning axes (planner.hpp step 7, docs/axes.md),
+// against closed forms derived by hand in each test's comment.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "motion/planner.hpp"
+#include "motion/positioning_axes.hpp"
+#include "planner_test_support.hpp"
+
+namespace drycut::motion::testing {
+namespace {
+
+using interp::ElementKind;
+
+// plain_profile plus a rotary A: 60 deg/s, 600 deg/s², jerk 6000 deg/s³.
+machine::MachineProfile rotary_profile() {
+  machine::MachineProfile p = plain_profile();
+  machine::AxisData a;
+  a.name = "A";
+  a.rotary = true;
+  a.max_velocity_mm_s = 60;
+  a.max_accel_mm_s2 = 600;
+  a.max_jerk_mm_s3 = 6000;
+  a.transition_jerk_mm_s3 = 6000;
+  p.extra_axes.push_back(a);
+  return p;
+}
+
+interp::PathElement with_a(interp::PathElement e, double start, double travel, bool grouped = false) {
+  e.extra_axes.push_back({0, "A", start, travel, grouped});
+  return e;
+}
+
+double plan_time(const machine::MachineProfile& profile, std::vector<interp::PathElement> elements) {
+  Recorder rec;
+  Planner planner(profile, rec);
+  for (auto& e : elements) planner.consume(std::move(e));
+  planner.finish();
+  return planner.summary().time_s;
+}
+
+const Vec3 O = Vec3::Zero();
+
+TEST(PlannerExtraAxes, SlowRotaryAxisCapsThePathVelocity) {
+  // X 30 mm with A 40 deg, F6000 (100 mm/s), BRISK, rest to rest. A moves 4/3 deg per mm:
+  // v <= 60 / (4/3) = 45 mm/s; a_t = min(5000, 600 / (4/3) = 450) = 450: t = 30/45 + 45/450.
+  const double t = plan_time(rotary_profile(), {with_a(line(O, Vec3(30, 0, 0), 6000), 0, 40)});
+  EXPECT_NEAR(t, 30.0 / 45.0 + 45.0 / 450.0, 1e-9);
+}
+
+TEST(PlannerExtraAxes, GroupedAxisCountsInThePathLength) {
+  // FGROUP(X, A): L = sqrt(30² + 40²) = 50, F3000 = 50/s; shares 0.6 (X) and 0.8 (A):
+  // A at 40 deg/s <= 60; a_t = min(5000/0.6, 600/0.8 = 750): t = 50/50 + 50/750.
+  const double t = plan_time(rotary_profile(), {with_a(line(O, Vec3(30, 0, 0), 3000), 0, 40, true)});
+  EXPECT_NEAR(t, 1.0 + 50.0 / 750.0, 1e-9);
+}
+
+TEST(PlannerExtraAxes, RotaryAloneIsPlannedInDegrees) {
+  // No geometry travel: the path is A's 90 deg at F1800 = 30 deg/s: t = 90/30 + 30/600.
+  const double t = plan_time(rotary_profile(), {with_a(line(O, O, 1800), 0, 90)});
+  EXPECT_NEAR(t, 3.0 + 0.05, 1e-9);
+}
+
+// Time over length L from v0 through cruise v to v1 with acceleration a (BRISK), all reachable.
+double trapezoid(double L, double v0, double v, double v1, double a) {
+  const double d_up = (v * v - v0 * v0) / (2 * a), d_down = (v * v - v1 * v1) / (2 * a);
+  return (v - v0) / a + (v - v1) / a + (L - d_up - d_down) / v;
+}
+
+TEST(PlannerExtraAxes, RotaryAxisStartingAtAJunctionIsACorner) {
+  // X 100, then X 100 more while A turns 1 deg per mm; F600 = 10 mm/s, G64 BRISK. At the
+  // junction A's velocity jumps from 0 to v·1: the overload rule allows a jump of at most
+  // 600·(1.2 - 1)·0.004 = 0.48 deg/s, so the path passes the junction at vj = 0.48 mm/s.
+  // Block 1: 0 -> 10 -> vj at 5000; block 2 (a_t = 600/1): vj -> 10 -> 0 at 600.
+  const double vj = 600 * 0.2 * 0.004;
+  const double t = plan_time(rotary_profile(), {line(O, Vec3(100, 0, 0), 600, {}, 1),
+                                                with_a(line(Vec3(100, 0, 0), Vec3(200, 0, 0), 600, {}, 2), 0, 100)});
+  EXPECT_NEAR(t, trapezoid(100, 0, 10, vj, 5000) + trapezoid(100, vj, 10, 0, 600), 1e-9);
+}
+
+interp::PathElement positioning(double travel, bool synchronous, int line_no) {
+  interp::PathElement e = passive(ElementKind::Positioning, synchronous ? "POS A" : "POSA A");
+  e.positioning.push_back({"A", travel, 30.0, 600.0, 0.0, 0.0, synchronous});
+  e.source.line = static_cast<uint32_t>(line_no);
+  return e;
+}
+
+TEST(PlannerExtraAxes, PositioningMoveIsRestToRest) {
+  // 90 deg at 30 deg/s, 600 deg/s²: 90/30 + 30/600 = 3.05 s; 5 deg still reaches 30 deg/s
+  // (30²/600 = 1.5 deg < 5): 5/30 + 30/600; 1 deg does not: triangle 2·sqrt(1/600).
+  interp::PositioningMove m{"A", 90.0, 30.0, 600.0, 0.0, 0.0, true};
+  EXPECT_NEAR(PositioningAxes::move_time(m), 3.05, 1e-12);
+  m.travel = 5.0;
+  EXPECT_NEAR(PositioningAxes::move_time(m), 5.0 / 30.0 + 0.05, 1e-12);
+  m.travel = 1.0;
+  EXPECT_NEAR(PositioningAxes::move_time(m), 2.0 * std::sqrt(1.0 / 600.0), 1e-12);
+  m.lead_time_s = 0.25;
+  EXPECT_NEAR(PositioningAxes::move_time(m), 0.25 + 2.0 * std::sqrt(1.0 / 600.0), 1e-12);
+}
+
+TEST(PlannerExtraAxes, PosWaitsForTheLongerOfPathAndAxis) {
+  // Block 1: X 10 at F600 (10/10 + 10/5000 = 1.002 s) with POS A 90 (3.05 s): the block takes 3.05 s.
+  const double t = plan_time(plain_profile(), {line(O, Vec3(10, 0, 0), 600, {}, 1), positioning(90, true, 1)});
+  EXPECT_NEAR(t, 3.05, 1e-9);
+  // A short POS (5 deg, 0.217 s) beside the same path: the path decides.
+  const double t2 = plan_time(plain_profile(), {line(O, Vec3(10, 0, 0), 600, {}, 1), positioning(5, true, 1)});
+  EXPECT_NEAR(t2, 1.002, 1e-9);
+}
+
+TEST(PlannerExtraAxes, PosaRunsOnUntilWaitp) {
+  // POSA A 90 (3.05 s) in block 1, then X 10 (1.002 s) in block 2, WAITP(A) in block 3.
+  interp::PathElement wait = passive(ElementKind::AxisWait, "WAIT A");
+  wait.wait_axes = {"A"};
+  const double t = plan_time(plain_profile(), {positioning(90, false, 1), line(O, Vec3(10, 0, 0), 600, {}, 2), wait});
+  EXPECT_NEAR(t, 3.05, 1e-9);
+}
+
+}  // namespace
+}  // namespace drycut::motion::testing
