@@ -272,6 +272,10 @@ class ProgramLoader::BlockBuilder {
   }
 
   void name(const Item& item) {
+    if (item.name == "MCALL") {  // the call in this block becomes modal; MCALL alone ends it
+      mcall_ = true;
+      return;
+    }
     const Support s = command_support(item.name);
     if (s == Support::NotModelled) {
       l_.warn_not_modelled(item.name, item.column);
@@ -304,6 +308,25 @@ class ProgramLoader::BlockBuilder {
     set_call(item.name, item.column);
   }
 
+  // MCALL name(args): the loader calls it after every later block with axis motion
+  // (ProgramLoader::next); the arguments are values taken now.
+  void set_modal_call() {
+    if (call_name_.empty()) {
+      l_.modal_call_.reset();
+      return;
+    }
+    if (passes_ != 1) throw LineError(12080, call_column_, "MCALL with passes P");
+    ModalCall call{call_name_, std::move(call_args_), call_column_};
+    for (CallArgument& a : call.args) {  // values only: the variables may be gone when it runs
+      if (a.element == SIZE_MAX) a.given = false;
+      a.variable = nullptr;
+      a.r_parameter = nullptr;
+    }
+    l_.modal_call_ = std::move(call);
+    call_name_.clear();
+    call_args_.clear();
+  }
+
   void set_call(std::string_view name, uint32_t column) {
     if (!call_name_.empty()) throw LineError(12080, column, "two program calls in one block");
     call_name_.assign(name);
@@ -312,6 +335,7 @@ class ProgramLoader::BlockBuilder {
 
   bool finish() {
     f_.executed_block = f_.executed_block || has_words_ || !call_name_.empty();
+    if (mcall_) set_modal_call();
     if (!call_name_.empty()) {
       // A misspelled command next to other words is not a call: say what it probably is.
       if (has_words_) {
@@ -350,6 +374,7 @@ class ProgramLoader::BlockBuilder {
   std::string call_name_;
   uint32_t call_column_ = 0;
   uint64_t passes_ = 1;
+  bool mcall_ = false;
   bool has_words_ = false;
   PendingAction action_ = PendingAction::None;
   std::vector<CallArgument> call_args_;

@@ -44,7 +44,7 @@ constexpr std::array kCommands{
     CommandEntry{"FCUB", N},    CommandEntry{"TCARR", N},   CommandEntry{"TCOABS", N},
     CommandEntry{"TCOFR", N},   CommandEntry{"CPRECON", N}, CommandEntry{"CPRECOF", N},
     CommandEntry{"SOFTA", N},   CommandEntry{"BRISKA", N},  
-    CommandEntry{"WORKPIECE", N}, CommandEntry{"MCALL", N},
+    CommandEntry{"WORKPIECE", N}, CommandEntry{"MCALL", M},
     CommandEntry{"DISCL", N},
     CommandEntry{"EXTCALL", N}, CommandEntry{"PCALL", N},
     CommandEntry{"POS", M},     CommandEntry{"POSA", M},    CommandEntry{"SPOSA", M},

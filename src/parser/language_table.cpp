@@ -60,7 +60,8 @@ constexpr std::array kStatements{
     Row{"STOPRE", M, "preprocessing stop"},
     Row{"ID=n WHEN/WHENEVER/FROM/EVERY ... DO ...", N, "synchronized actions: accepted, not simulated"},
     Row{"SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", N, "interrupt routines: accepted, never triggered in a dry run"},
-    Row{"MCALL / PCALL / EXTCALL", N, "modal and external calls: accepted with a warning"},
+    Row{"MCALL name(args) / MCALL", M, "modal call after every block with axis motion (not inside the called program); MCALL alone ends it"},
+    Row{"PCALL / EXTCALL", N, "external calls: accepted with a warning"},
 };
 
 constexpr std::array kOperators{

@@ -39,6 +39,7 @@ struct ProgramLoader::Frame {
   VariableTable locals;            // LUD
   bool executed_block = false;     // DEF is only allowed before the first executable block
   bool save = false;               // PROC ... SAVE: the caller's modal state comes back at the return
+  bool modal_call = false;         // runs the MCALL subprogram: no modal call from inside it
 };
 
 // Values of names for the expression evaluator.

@@ -156,7 +156,10 @@ bool ProgramLoader::next(Block& out) {
     }
     if (is_blank_or_comment(text_)) continue;  // empty, comment, tape header
     if (frames_.size() == 1) main_has_content_ = true;
-    if (execute_line(out)) return true;
+    if (execute_line(out)) {
+      if (modal_call_) schedule_modal_call(out);
+      return true;
+    }
   }
 }
 
@@ -264,9 +267,30 @@ void ProgramLoader::call_program(const std::string& written_name, uint64_t passe
   frame->passes_left = std::max<uint64_t>(1, passes);
   frame->args = std::move(pending_args_);
   pending_args_.clear();
+  frame->modal_call = pending_is_modal_call_;
+  pending_is_modal_call_ = false;
   if (std::find(programs_used_.begin(), programs_used_.end(), name.name) == programs_used_.end())
     programs_used_.push_back(name.name);
   frames_.push_back(std::move(frame));
+}
+
+void ProgramLoader::schedule_modal_call(const Block& block) {
+  if (pending_ != PendingAction::None) return;  // the block calls or ends itself
+  for (const auto& f : frames_)
+    if (f->modal_call) return;
+  const bool moves = std::any_of(block.addresses.begin(), block.addresses.end(), [](const AddressWord& a) {
+    const std::string_view n = a.name;
+    if (n == "AP" || n == "RP") return true;
+    if (n.empty() || std::string_view("XYZABCUVW").find(n[0]) == std::string_view::npos) return false;
+    return std::all_of(n.begin() + 1, n.end(), [](char c) { return c >= '0' && c <= '9'; });
+  });
+  if (!moves) return;
+  pending_ = PendingAction::Call;
+  pending_call_ = modal_call_->name;
+  pending_passes_ = 1;
+  pending_column_ = modal_call_->column;
+  pending_args_ = modal_call_->args;
+  pending_is_modal_call_ = true;
 }
 
 void ProgramLoader::end_of_file() {

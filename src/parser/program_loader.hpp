@@ -57,6 +57,14 @@ struct CallArgument {
   double* r_parameter = nullptr;
 };
 
+// MCALL name(args): called after every block with axis motion until MCALL alone (PGA
+// Fundamentals "Modal subprogram call (MCALL)"); not inside the called subprogram itself.
+struct ModalCall {
+  std::string name;
+  std::vector<CallArgument> args;  // values
+  uint32_t column = 0;
+};
+
 class ProgramLoader {
  public:
   // Program levels: main = 0, deepest subprogram = kMaxProgramLevel (16 levels in all).
@@ -94,6 +102,8 @@ class ProgramLoader {
   bool read_line(Frame& f);  // next line into text_/position_; false at end of file
   bool execute_line(Block& out);
   void call_program(const std::string& written_name, uint64_t passes, uint32_t column);
+  // After a block with axis motion: the MCALL subprogram is due (not from inside it).
+  void schedule_modal_call(const Block& block);
   void end_of_file();
   void finish_frame();
   double eval(ExprIndex e) const;
@@ -160,6 +170,8 @@ class ProgramLoader {
   uint64_t pending_passes_ = 1;
   uint32_t pending_column_ = 0;
   std::vector<CallArgument> pending_args_;
+  bool pending_is_modal_call_ = false;   // the pending call is the modal call (MCALL)
+  std::optional<ModalCall> modal_call_;
   std::optional<Alarm> definition_alarm_;  // from a definition file: raised by the first next()
 
   std::vector<std::string> programs_used_;
