@@ -155,6 +155,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       }
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
+    } else if (n == "TCOABS" || n == "TCOFR") {
+      orient_tool(ctx, n, c.column);
     } else if (apply_axis_command(ctx, c)) {
       // FGROUP, WAITP, WAITS (interpreter_axes.cpp)
     } else if (!state_.apply_code(n)) {

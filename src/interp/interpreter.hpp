@@ -111,6 +111,7 @@ class Interpreter {
   void change_tool(BlockContext& ctx);
   // Tool length compensation: the length vector of the active edge along the plane normal.
   Eigen::Vector3d tool_length_vector() const;
+  void orient_tool(const BlockContext& ctx, const std::string& command, uint32_t column);
   // Frames and polar coordinates.
   const Frame& block_frame(const BlockContext& ctx) const;
   bool is_incremental(const parser::AddressWord& a) const;
@@ -149,6 +150,8 @@ class Interpreter {
   std::set<std::string> warned_;
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
+  // A swivel head's rotation of the tool (TCOABS/TCOFR with swivel_kinematics "head").
+  Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
   std::array<Frame, kSettableFrames> settable_frames_;  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};
 };

@@ -15,7 +15,22 @@ using namespace detail;
 Vector3d Interpreter::tool_length_vector() const {
   Vector3d length = Vector3d::Zero();
   length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
-  return length;
+  if (tool_orientation_.isIdentity()) return length;
+  // A swivel head (TCOABS/TCOFR): the length along the swivelled plane normal.
+  const Vector3d direction = tool_orientation_ * Vector3d::Unit(state_.plane_normal_axis());
+  return direction.normalized() * tools_.offsets().length_mm;
+}
+
+void Interpreter::orient_tool(const BlockContext& ctx, const std::string& command, uint32_t column) {
+  // TCOABS/TCOFR take the tool orientation from the swivel (drycut's CYCLE800 keeps the swivel in
+  // the frame, so both take the frame's rotation). Only a head turns the tool.
+  if (profile_.swivel_kinematics == "head") {
+    tool_orientation_ = block_frame(ctx).linear();
+    return;
+  }
+  if (profile_.swivel_kinematics == "none" && !block_frame(ctx).is_pure_translation())
+    warn_once(ctx, command + " (no swivel kinematics in the machine profile: the tool length stays on the machine axis)",
+              column);
 }
 
 const Frame& Interpreter::block_frame(const BlockContext& ctx) const {

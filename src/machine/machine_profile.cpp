@@ -92,6 +92,11 @@ void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
     p.cutting_edge_default = static_cast<int>(*v);
   }
   if (auto v = r.boolean("tool_table_complete")) p.tool_table_complete = *v;
+  if (auto v = r.string("swivel_kinematics")) {
+    if (*v != "none" && *v != "table" && *v != "head")
+      r.fail("swivel_kinematics", "must be \"none\", \"table\" or \"head\" ($TC_CARR23 T/P)");
+    p.swivel_kinematics = *v;
+  }
   if (auto v = r.string("base_unit")) {
     if (*v != "mm" && *v != "inch") r.fail("base_unit", "must be \"mm\" or \"inch\"");
     p.base_unit_inch = *v == "inch";
@@ -293,6 +298,7 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"tool_change_m_code", p.tool_change_m_code},
                      {"cutting_edge_default", p.cutting_edge_default},
                      {"tool_table_complete", p.tool_table_complete},
+                     {"swivel_kinematics", p.swivel_kinematics},
                      {"base_unit", p.base_unit_inch ? "inch" : "mm"}};
   json tools = json::array();
   for (const auto& t : p.tools) {

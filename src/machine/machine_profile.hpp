@@ -73,6 +73,10 @@ struct MachineProfile {
   // "G54" -> RPY rotation of the settable frame, degrees about X, Y, Z (acts inside the offset).
   std::map<std::string, Eigen::Vector3d> work_offset_rotations_deg;
   std::vector<Tool> tools;
+  // Swivel data ($TC_CARR23, the kinematic type CYCLE800 works with): "none" (no swivel data:
+  // TCOABS/TCOFR warn), "table" (the table turns, the tool stays along the machine axis),
+  // "head" (the head turns: after TCOABS/TCOFR the tool length acts along the swivelled axis).
+  std::string swivel_kinematics = "none";
   bool base_unit_inch = false;                  // MD10240 SCALING_SYSTEM_IS_METRIC = false: the base system is inch
   int tool_change_mode = 1;                     // MD22550 TOOL_CHANGE_MODE: 1 = T prepares, M6 changes; 0 = T changes
   int tool_change_m_code = 6;                   // MD22560 TOOL_CHANGE_M_CODE
