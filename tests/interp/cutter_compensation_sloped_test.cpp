@@ -234,6 +234,25 @@ TEST(CutterCompensationSloped, ChevronG42OutsideCornersAndOneInsideCorner) {
   }
 }
 
+TEST(CutterCompensationSloped, InsideCornerInTheG18PlaneMeetsAtOneValueOfY) {
+  // G18: plane (Z, X), normal Y. An L in plane coordinates (0,0) -> (20,0) -> (20,20), Y falling
+  // 1 mm per edge, G41 inside the left turn, r = 2: the offsets meet at plane point (18, 2), and
+  // each edge skips 2 mm of its 20 (0.1 mm of Y). Both pieces are 18 mm in the plane with the
+  // same slope, so the skipped 0.2 mm is shared equally: they meet at Y = -0.9 - 0.1 = -1.
+  const Comp comp{.side = CompensationSide::Left, .plane_axis = 1};
+  auto g18 = [](double first, double second, double normal) { return Vec3(second, normal, first); };
+  StageRun run;
+  run.feed({line(g18(-10, -10, 0), g18(0, 0, 0), comp, 1), line(g18(0, 0, 0), g18(20, 0, -1), comp, 2),
+            line(g18(20, 0, -1), g18(20, 20, -2), comp, 3), line(g18(20, 20, -2), g18(30, 30, -2), comp.off(), 4)});
+  ASSERT_FALSE(run.diagnostics.has_alarms());
+  const auto out = run.sink.motions();
+  ASSERT_EQ(out.size(), 4u);
+  test::expect_continuous(out, 1e-9);
+  EXPECT_LT((out[1].curve->end() - g18(18, 2, -1)).norm(), 1e-9) << out[1].curve->end().transpose();
+  EXPECT_LT((out[2].curve->start() - g18(18, 2, -1)).norm(), 1e-9);
+  EXPECT_LT((out[2].curve->end() - g18(18, 20, -2)).norm(), 1e-9);
+}
+
 // ---------------------------------------------------------------- helix and cut loops
 
 TEST(CutterCompensationSloped, HelixKeepsItsPitch) {
