@@ -17,7 +17,7 @@
 //   change exceeds 100 degrees (then the circle). Corner elements belong to the NEXT block.
 //   A joint whose offset points are closer than 1e-6 mm is tangential and gets no corner element.
 // - Offsets of lines and arcs in the plane are exact LineCurves / ArcCurves; anything else is a
-//   geometry::OffsetCurve. Only the in-plane part is offset; motion along the normal stays.
+//   geometry::OffsetCurve. Only the in-plane part is offset; for the normal see below.
 // - Inside corners and loops (one model for both): the raw tool-centre path is the chain of the
 //   offsets, with a straight "gap bridge" from one offset's end to the next one's start at every
 //   inside joint. That raw path folds over itself wherever the tool cannot follow the contour: at
