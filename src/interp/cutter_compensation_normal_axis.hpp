@@ -27,6 +27,10 @@
 //   (D = 0) keeps its own motion exactly (a helix its pitch).
 //   A span without in-plane length (or a stretch of none) does not move the normal axis: the next
 //   stretch takes the rise over.
+// Where the plane is smooth (at the ends of a transition circle) the slope may still change from
+// one stretch to the next: a kink of the size of that change (at most about 1 degree on the
+// experiment's 5 % ramps). A cubic blend over the inserted element would remove it, but on
+// circles of a few micrometres that is a bend of thousands of 1/mm for the planner.
 // The window is streamed: span 0 is emitted now; the later spans may still be shortened when more
 // blocks arrive, and are planned again when their turn comes (from where span 0 ended).
 #include <vector>
