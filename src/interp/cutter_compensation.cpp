@@ -8,6 +8,7 @@
 
 #include "interp/cutter_compensation_corner.hpp"
 #include "interp/cutter_compensation_crossing.hpp"
+#include "interp/cutter_compensation_normal_axis.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
 
@@ -28,6 +29,8 @@ constexpr double kNegligibleLength = 1e-9;  // mm
 constexpr int kLengthSamples = 32;
 // Bound on the cut/split passes for one new element (each removes a loop or a stretch).
 constexpr int kMaxCrossingPasses = 1000;
+// A shift along the plane normal below this is rounding: the curve is built unshifted.
+constexpr double kNoShift = 1e-9;  // mm
 
 [[noreturn]] void raise(int number, const std::string& detail, const BlockRef& block) {
   throw AlarmError(make_alarm(number, detail, SourceLocation{block.file_name(), block.line, 0}, block.text));
@@ -405,9 +408,41 @@ void CutterCompensation::emit_front() {
     last_direction_ = end_direction(item.piece->base(), plane_);
     last_offset_ = item.piece->offset();
   }
-  CurvePtr curve = item.piece->build_curve();
-  apply_constant_contour_feed(item.element, item.piece->u_end() - item.piece->u_begin(), curve->length());
+  const geometry::NormalRamp shift = normal_axis_shift(item);
+  const bool shifted = shift.at_begin != 0.0 || shift.at_end != 0.0;
+  CurvePtr curve = item.piece->build_curve(shift);
+  // CFC compares the lengths as programmed: the shift along the normal is not a contour change.
+  const double centre_mm = shifted ? item.piece->build_curve()->length() : curve->length();
+  apply_constant_contour_feed(item.element, item.piece->u_end() - item.piece->u_begin(), centre_mm);
   emit(std::move(item.element), std::move(curve), last_of_block);
+}
+
+geometry::NormalRamp CutterCompensation::normal_axis_shift(const Item& item) const {
+  // The spans from this piece up to the next point in step with the program (see
+  // cutter_compensation_normal_axis.hpp); passengers take part with their own normal travel.
+  std::vector<NormalAxisSpan> ahead;
+  auto add_piece = [&](const Item& it) {
+    const OffsetPiece& piece = *it.piece;
+    ahead.push_back(NormalAxisSpan{piece.in_plane_length(), piece.normal_start(), piece.normal_end(),
+                                   it.element.inserted || it.gap_bridge, piece.reaches_base_end(), it.block});
+    return ahead.back().in_step_at_end && !ahead.back().inserted;
+  };
+  bool anchored = add_piece(item);
+  for (size_t i = 0; i < window_.size() && !anchored; ++i) {
+    const Item& it = window_[i];
+    if (it.piece) {
+      anchored = add_piece(it);
+    } else if (it.element.is_motion() && it.element.curve) {
+      const double travel = plane_.normal.dot(it.element.curve->end() - it.element.curve->start());
+      ahead.push_back(NormalAxisSpan{0.0, 0.0, travel, false, false, it.block});
+    }
+  }
+  const double tool = plane_.normal.dot(tool_position_);
+  const double end = normal_value_at_end(tool, ahead);
+  geometry::NormalRamp shift{tool - item.piece->normal_start(), end - item.piece->normal_end()};
+  if (std::abs(shift.at_begin) < kNoShift) shift.at_begin = 0.0;
+  if (std::abs(shift.at_end) < kNoShift) shift.at_end = 0.0;
+  return shift;
 }
 
 void CutterCompensation::apply_constant_contour_feed(PathElement& element, double contour_mm, double centre_mm) const {

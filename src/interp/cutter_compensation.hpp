@@ -17,7 +17,7 @@
 //   change exceeds 100 degrees (then the circle). Corner elements belong to the NEXT block.
 //   A joint whose offset points are closer than 1e-6 mm is tangential and gets no corner element.
 // - Offsets of lines and arcs in the plane are exact LineCurves / ArcCurves; anything else is a
-//   geometry::OffsetCurve. Only the in-plane part is offset; motion along the normal stays.
+//   geometry::OffsetCurve. Only the in-plane part is offset; for the normal see below.
 // - Inside corners and loops (one model for both): the raw tool-centre path is the chain of the
 //   offsets, with a straight "gap bridge" from one offset's end to the next one's start at every
 //   inside joint. That raw path folds over itself wherever the tool cannot follow the contour: at
@@ -36,8 +36,13 @@
 // - CDON and CDOF search the same MD20240 blocks: the manual's CDOF searches the previous block
 //   and, failing that, earlier ones; the experiment's programs (CDOF, the reset default) were
 //   milled with inside corners resolved several blocks on. Crossings are tested in the plane
-//   only (the tool-centre path keeps its motion along the normal; a cut joins the two stretches
-//   by a straight move).
+//   only.
+// - The normal axis (Z under G17) follows the programmed blocks: where the tool centre is in step
+//   with the program it is at the programmed value; where the compensation shortens, cuts or
+//   joins blocks, the motion along the normal is spread over the in-plane length so that both
+//   sides of a cut meet at one point in 3-D (no element moves the normal axis alone, no vertical
+//   step at an inside corner); inserted elements share their block's slope
+//   (cutter_compensation_normal_axis.hpp).
 // - Feed: the tool-centre path gets the programmed F unchanged (F is the tool-centre velocity,
 //   not CFC's contour velocity). Every output element keeps the source block, feed, dynamics and
 //   label of the block it comes from; a block split into several elements stops (G9/G60) only
@@ -88,6 +93,7 @@ class CutterCompensation : public ElementSink {
   void release_old_blocks(int check_blocks);
   void flush_window();
   void emit_front();
+  geometry::NormalRamp normal_axis_shift(const Item& item) const;
   void apply_constant_contour_feed(PathElement& element, double contour_mm, double centre_mm) const;
   void emit(PathElement element, geometry::CurvePtr curve, bool last_of_block);
   void emit_passenger(PathElement element);

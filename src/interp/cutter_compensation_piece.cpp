@@ -86,26 +86,39 @@ bool OffsetPiece::runs_backwards(double u0, double u1) const {
   return false;
 }
 
-geometry::CurvePtr OffsetPiece::build_curve() const {
-  if (straight_ || u_end_ <= u_begin_) return std::make_shared<geometry::LineCurve>(start(), end());
+double OffsetPiece::in_plane_length() const {
+  double sum = 0.0;
+  for (size_t i = 1; i < sample_xy_.size(); ++i) sum += (sample_xy_[i] - sample_xy_[i - 1]).norm();
+  return sum;
+}
+
+geometry::CurvePtr OffsetPiece::build_curve(geometry::NormalRamp shift) const {
+  if (straight_ || u_end_ <= u_begin_)
+    return std::make_shared<geometry::LineCurve>(start() + shift.at_begin * plane_.normal,
+                                                 end() + shift.at_end * plane_.normal);
   const auto* arc = dynamic_cast<const geometry::ArcCurve*>(base_.get());
   if (arc != nullptr && arc->radius() > 0.0 && std::abs(plane_.normal.dot(arc->normal())) > kParallelCosine) {
     // An arc (or helix) about the plane normal: its offset is the concentric arc with the radius
-    // changed by the offset; the angle parameter is shared, so trimming maps linearly.
+    // changed by the offset; the angle parameter is shared, so trimming maps linearly, and so
+    // does a shift along the normal (it changes the axial travel only).
     const double length = arc->length();
     const Vec3 n_arc = arc->normal();
+    const double along = plane_.normal.dot(n_arc);  // +1 or -1
     const Vec3 e1 = (arc->start() - arc->centre()) / arc->radius();
     const Vec3 e2 = n_arc.cross(e1);
     const double turn_sign = arc->sweep() > 0.0 ? 1.0 : -1.0;
-    const double radius = arc->radius() - offset_ * turn_sign * plane_.normal.dot(n_arc);
+    const double radius = arc->radius() - offset_ * turn_sign * along;
     const double f0 = u_begin_ / length, f1 = u_end_ / length;
     double start_angle = arc->sweep() * f0;
     if (radius < 0.0) start_angle += std::numbers::pi;  // the offset point is across the centre
-    return std::make_shared<geometry::ArcCurve>(arc->centre() + arc->axial_travel() * f0 * n_arc, std::abs(radius), e1,
-                                                e2, start_angle, arc->sweep() * (f1 - f0),
-                                                arc->axial_travel() * (f1 - f0));
+    const Vec3 centre = arc->centre() + arc->axial_travel() * f0 * n_arc + shift.at_begin * plane_.normal;
+    const double axial = arc->axial_travel() * (f1 - f0) + (shift.at_end - shift.at_begin) * along;
+    return std::make_shared<geometry::ArcCurve>(centre, std::abs(radius), e1, e2, start_angle, arc->sweep() * (f1 - f0),
+                                                axial);
   }
-  return std::make_shared<geometry::OffsetCurve>(base_, offset_, plane_.normal, u_begin_, u_end_);
+  if (shift.at_begin == 0.0 && shift.at_end == 0.0)
+    return std::make_shared<geometry::OffsetCurve>(base_, offset_, plane_.normal, u_begin_, u_end_);
+  return std::make_shared<geometry::OffsetCurve>(base_, offset_, plane_.normal, u_begin_, u_end_, shift);
 }
 
 }  // namespace drycut::interp

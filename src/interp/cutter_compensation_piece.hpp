@@ -46,8 +46,18 @@ class OffsetPiece {
   bool runs_backwards(double u0, double u1) const;
 
   // The tool-centre curve of the stretch: an exact LineCurve or ArcCurve where the base is a line
-  // or an arc in the compensation plane, an OffsetCurve otherwise.
-  geometry::CurvePtr build_curve() const;
+  // or an arc in the compensation plane, an OffsetCurve otherwise. `shift` moves it along the
+  // plane normal: by shift.at_begin at its start and shift.at_end at its end, linearly in the base
+  // parameter in between (a line stays a line, a helix about the normal a helix).
+  geometry::CurvePtr build_curve(geometry::NormalRamp shift = {}) const;
+
+  // Length of the stretch in the plane (its polyline: exact for lines, 2e-5 relative for curves).
+  double in_plane_length() const;
+  // Coordinate of the start and end along the plane normal.
+  double normal_start() const { return plane_.normal.dot(start()); }
+  double normal_end() const { return plane_.normal.dot(end()); }
+  // The stretch still ends where its base ends (not shortened there by an intersection).
+  bool reaches_base_end() const { return u_end_ >= base_->length() - 1e-9; }
 
   const geometry::Curve& base() const { return *base_; }
   double offset() const { return offset_; }

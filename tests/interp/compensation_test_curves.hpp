@@ -3,6 +3,7 @@
 // under test).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "interp/geometry/curve.hpp"
 
@@ -57,6 +58,33 @@ class ParabolaCurve final : public geometry::Curve {
  private:
   double a_, x0_, x1_, z0_;
   double length_;
+};
+
+// A curve in the plane z = const climbed at a constant grade g (mm of Z per mm in the plane):
+//   P(S) = B(s) + g s e_z,   s = S / sqrt(1 + g^2)
+// so dP/dS = (T_B + g e_z) / w, d2P/dS2 = K_B / w^2, d3P/dS3 = K'_B / w^3 with w = sqrt(1 + g^2).
+class GradedCurve final : public geometry::Curve {
+ public:
+  GradedCurve(geometry::CurvePtr flat, double grade)
+      : flat_(std::move(flat)), grade_(grade), w_(std::sqrt(1.0 + grade * grade)) {}
+  double length() const override { return flat_->length() * w_; }
+  double max_curvature() const override { return flat_->max_curvature() / (w_ * w_); }
+  geometry::CurvePoint at(double S) const override {
+    const double s = std::clamp(S / w_, 0.0, flat_->length());
+    const geometry::CurvePoint b = flat_->at(s);
+    geometry::CurvePoint p;
+    p.position = b.position + geometry::Vec3(0, 0, grade_ * s);
+    p.tangent = (b.tangent + geometry::Vec3(0, 0, grade_)) / w_;
+    p.curvature_vector = b.curvature_vector / (w_ * w_);
+    p.curvature_rate = b.curvature_rate / (w_ * w_ * w_);
+    p.curvature = p.curvature_vector.norm();
+    p.curvature_derivative = b.curvature_derivative / (w_ * w_ * w_);
+    return p;
+  }
+
+ private:
+  geometry::CurvePtr flat_;
+  double grade_, w_;
 };
 
 }  // namespace drycut::test

@@ -158,6 +158,28 @@ TEST(ThesisCompensation, EntrySplineFoldClosesOnlyBeyondTheProfileWindow) {
   }
 }
 
+// Issue 16: the loops of the linear programs descend and rise in Z; at every inside corner the
+// tool centre used to climb or drop vertically (53 such elements in EKVI_LIN_15). The programs
+// have no block that moves Z alone inside the loops, so the tool-centre path must have none.
+TEST(ThesisCompensation, LinearLoopsHaveNoElementMovingZAlone) {
+  const auto programs = workload::thesis_programs();
+  for (const std::string name : {"EKVI_LIN_15.MPF", "EKVI_LIN_45.MPF", "EKVI_LIN_90.MPF"}) {
+    const auto& program = find_program(programs, name);
+    const auto run = run_thesis_program(program, machine::default_profile());
+    ASSERT_FALSE(run->alarm) << name << ": " << run->alarm->format();
+    int in_loops = 0;
+    for (const auto& e : run->tool_centre.motions) {
+      if (!e.source.file_name().ends_with(program.sub.file_name)) continue;
+      ++in_loops;
+      const Vec3 chord = e.curve->end() - e.curve->start();
+      const bool z_alone = std::hypot(chord.x(), chord.y()) < 1e-6 && std::abs(chord.z()) > 0.0;
+      EXPECT_FALSE(z_alone) << name << " " << e.source.text << ": " << e.curve->start().transpose() << " -> "
+                            << e.curve->end().transpose();
+    }
+    EXPECT_GT(in_loops, 100) << name;
+  }
+}
+
 // In-plane distance from p to a polyline given as dense samples of the programmed path.
 double distance_to_polyline(const Eigen::Vector2d& p, const std::vector<Eigen::Vector2d>& poly) {
   double best = std::numeric_limits<double>::infinity();

@@ -51,7 +51,11 @@ OffsetCurve::OffsetCurve(CurvePtr base, double offset_mm, Vec3 plane_normal)
     : OffsetCurve(base, offset_mm, plane_normal, 0.0, base->length()) {}
 
 OffsetCurve::OffsetCurve(CurvePtr base, double offset_mm, Vec3 plane_normal, double u_begin, double u_end)
-    : base_(std::move(base)), offset_(offset_mm), normal_(plane_normal.normalized()) {
+    : OffsetCurve(std::move(base), offset_mm, plane_normal, u_begin, u_end, NormalRamp{}) {}
+
+OffsetCurve::OffsetCurve(CurvePtr base, double offset_mm, Vec3 plane_normal, double u_begin, double u_end,
+                         NormalRamp ramp)
+    : base_(std::move(base)), offset_(offset_mm), normal_(plane_normal.normalized()), ramp_(ramp) {
   const double length = base_->length();
   u_begin_ = std::clamp(u_begin, 0.0, length);
   u_end_ = std::clamp(u_end, u_begin_, length);
@@ -62,12 +66,20 @@ OffsetCurve::OffsetCurve(CurvePtr base, double offset_mm, Vec3 plane_normal, dou
   }
 }
 
-double OffsetCurve::speed(double u) const {
-  return offset_derivatives(base_->at(u), offset_, normal_).first.norm();
+OffsetDerivatives OffsetCurve::derivatives(const CurvePoint& base_point, double u) const {
+  OffsetDerivatives d = offset_derivatives(base_point, offset_, normal_);
+  if (ramp_.at_begin == 0.0 && ramp_.at_end == 0.0) return d;
+  const double range = u_end_ - u_begin_;
+  const double slope = range > 0.0 ? (ramp_.at_end - ramp_.at_begin) / range : 0.0;
+  d.position += normal_ * (ramp_.at_begin + slope * (u - u_begin_));
+  d.first += normal_ * slope;
+  return d;
 }
 
+double OffsetCurve::speed(double u) const { return derivatives(base_->at(u), u).first.norm(); }
+
 Vec3 OffsetCurve::curvature_vector_at(double u) const {
-  const OffsetDerivatives d = offset_derivatives(base_->at(u), offset_, normal_);
+  const OffsetDerivatives d = derivatives(base_->at(u), u);
   const double sigma = d.first.norm();
   if (sigma < kParallelTolerance) return Vec3::Zero();  // cusp of a loop: no finite curvature
   const Vec3 t = d.first / sigma;
@@ -81,7 +93,7 @@ double OffsetCurve::base_parameter(double s) const {
 CurvePoint OffsetCurve::at(double s) const {
   const double u = base_parameter(s);
   const CurvePoint b = base_->at(u);
-  const OffsetDerivatives d = offset_derivatives(b, offset_, normal_);
+  const OffsetDerivatives d = derivatives(b, u);
   CurvePoint p;
   p.position = d.position;
   const double sigma = d.first.norm();

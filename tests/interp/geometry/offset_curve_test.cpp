@@ -136,5 +136,23 @@ TEST(OffsetCurve, TrimmedStretchStartsAtTheBaseParameter) {
   EXPECT_TRUE(off.end().isApprox(Vec3(0, 11, 0), 1e-9));
 }
 
+TEST(OffsetCurve, NormalRampShiftsAlongTheNormalLinearlyInTheBaseParameter) {
+  // The offset of a quarter circle of radius 10 by -1 (radius 11), shifted by 0.5 mm at its start
+  // and -1.5 mm at its end: a helix of radius 11 about the axis, Z = 0.5 - 2 * (angle / 90 deg),
+  // length sqrt((11 pi / 2)^2 + 2^2).
+  auto arc = std::make_shared<ArcCurve>(Vec3(0, 0, 0), 10.0, Plane::G17, 0.0, kPi / 2, 0.0);
+  OffsetCurve off(arc, -1.0, kZ, 0.0, arc->length(), NormalRamp{0.5, -1.5});
+  EXPECT_NEAR(off.length(), std::hypot(11.0 * kPi / 2, 2.0), 1e-7);
+  for (int i = 0; i <= 8; ++i) {
+    const CurvePoint p = off.at(off.length() * i / 8);
+    const double angle = std::atan2(p.position.y(), p.position.x());
+    EXPECT_NEAR(std::hypot(p.position.x(), p.position.y()), 11.0, 1e-9);
+    EXPECT_NEAR(p.position.z(), 0.5 - 2.0 * angle / (kPi / 2), 1e-7);
+    // A helix's curvature: r / (r^2 + c^2) with c = -2 mm per pi/2 rad.
+    const double c = 2.0 / (kPi / 2);
+    EXPECT_NEAR(p.curvature, 11.0 / (121.0 + c * c), 1e-6);
+  }
+}
+
 }  // namespace
 }  // namespace drycut::geometry
