@@ -229,8 +229,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
     } else if (a.mode != ValueMode::Default && a.mode != ValueMode::Absolute && a.mode != ValueMode::Incremental &&
-               extra_axes_.index(n) < 0) {
-      // DC/ACP/ACN choose the way of a rotary axis: on anything else the control refuses them.
+               extra_axes_.index(n) < 0 && !is_axis_letter_name(n)) {
+      // DC/ACP/ACN choose the way of a rotary axis: on X, Y, Z and non-axis words the control
+      // refuses them (an extra axis the profile lacks is a warning below; a linear one: 168xx).
       const int number = a.mode == ValueMode::Direct ? 16800 : a.mode == ValueMode::AbsolutePositive ? 16810 : 16820;
       raise(ctx, number, a.name + " is not a rotary axis", a.column);
     } else {

@@ -84,6 +84,8 @@ class Interpreter {
   void add_positioning(BlockContext& ctx, const parser::AxisWord& word);
   void add_spindle_positioning(BlockContext& ctx, const parser::AxisWord& word);
   std::vector<ExtraAxisMove> take_extra_axis_moves(BlockContext& ctx);
+  // Moves extra axis i to a programmed value (alarms 168xx, 10720); returns the travel.
+  double move_extra_axis(const BlockContext& ctx, size_t i, double value, parser::ValueMode mode, uint32_t column);
   void attach_extra_axes(BlockContext& ctx, PathElement& element, std::vector<ExtraAxisMove> moves);
   void emit_axis_waits(BlockContext& ctx);
   void emit_positioning(BlockContext& ctx);

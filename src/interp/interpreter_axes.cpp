@@ -3,6 +3,7 @@
 // and waits (WAITP/WAITS). The rules are in extra_axes.hpp and docs/axes.md.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
@@ -17,9 +18,6 @@ using namespace detail;
 
 namespace {
 
-bool is_axis_letter_name(std::string_view n) {
-  return n.size() == 1 && std::string_view("ABCUVW").find(n[0]) != std::string_view::npos;
-}
 
 double wrap_turn(double degrees) {
   const double r = std::fmod(degrees, 360.0);
@@ -30,7 +28,7 @@ std::vector<std::string> text_args(const parser::CommandWord& c) {
   std::vector<std::string> out;
   for (const auto& a : c.args)
     if (const auto* s = std::get_if<std::string>(&a)) out.push_back(*s);
-    else out.push_back(std::to_string(static_cast<long long>(std::get<double>(a))));
+    else out.push_back(parser::number_to_text(std::get<double>(a)));
   return out;
 }
 
@@ -127,17 +125,11 @@ void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
     ctx.waits.push_back(w.axis);
     extra_axes_.clear_running(w.axis);
   }
-  const ExtraAxes::Travel t = extra_axes_.travel_to(i, w.value, w.mode, state_.absolute, geometry_unit());
-  if (t.alarm != 0) raise(ctx, t.alarm, t.detail, w.column);
+  const double travel = move_extra_axis(ctx, i, w.value, w.mode, w.column);
   const machine::AxisData& a = extra_axes_.data(i);
-  const double end = extra_axes_.position(i) + t.travel;
-  if (!a.modulo && (end < a.min_mm - 1e-9 || end > a.max_mm + 1e-9))
-    raise(ctx, 10720, "axis " + a.name + " at " + std::to_string(end) + ", limits " + std::to_string(a.min_mm) +
-                          " .. " + std::to_string(a.max_mm), w.column);
-  extra_axes_.move(i, t.travel);
   PositioningMove m;
   m.axis = w.axis;
-  m.travel = std::abs(t.travel);
+  m.travel = std::abs(travel);
   m.velocity = std::min(extra_axes_.positioning_feed(i), a.max_velocity_mm_s);
   m.accel = a.max_accel_mm_s2;
   m.block_synchronous = w.kind == AxisWordKind::Pos;
@@ -181,18 +173,27 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   ctx.positioning.push_back(std::move(m));
 }
 
+double Interpreter::move_extra_axis(const BlockContext& ctx, size_t i, double value, parser::ValueMode mode,
+                                    uint32_t column) {
+  const ExtraAxes::Travel t = extra_axes_.travel_to(i, value, mode, state_.absolute, geometry_unit());
+  if (t.alarm != 0) raise(ctx, t.alarm, t.detail, column);
+  const machine::AxisData& a = extra_axes_.data(i);
+  const double end = extra_axes_.position(i) + t.travel;
+  if (!a.modulo && (end < a.min_mm - 1e-9 || end > a.max_mm + 1e-9)) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "axis %s at %.3f, limits %.3f .. %.3f", a.name.c_str(), end, a.min_mm, a.max_mm);
+    raise(ctx, 10720, buf, column);
+  }
+  extra_axes_.move(i, t.travel);
+  return t.travel;
+}
+
 std::vector<ExtraAxisMove> Interpreter::take_extra_axis_moves(BlockContext& ctx) {
   std::vector<ExtraAxisMove> moves;
   for (const auto& [i, word] : ctx.extra_words) {
-    const ExtraAxes::Travel t = extra_axes_.travel_to(i, word->value, word->mode, state_.absolute, geometry_unit());
-    if (t.alarm != 0) raise(ctx, t.alarm, t.detail, word->column);
-    const machine::AxisData& a = extra_axes_.data(i);
     const double start = extra_axes_.position(i);
-    if (!a.modulo && (start + t.travel < a.min_mm - 1e-9 || start + t.travel > a.max_mm + 1e-9))
-      raise(ctx, 10720, "axis " + a.name + " at " + std::to_string(start + t.travel) + ", limits " +
-                            std::to_string(a.min_mm) + " .. " + std::to_string(a.max_mm), word->column);
-    extra_axes_.move(i, t.travel);
-    if (std::abs(t.travel) > 0) moves.push_back({static_cast<int>(i), a.name, start, t.travel, extra_axes_.in_feed_group(i)});
+    const double travel = move_extra_axis(ctx, i, word->value, word->mode, word->column);
+    if (travel != 0) moves.push_back({static_cast<int>(i), extra_axes_.data(i).name, start, travel, extra_axes_.in_feed_group(i)});
   }
   return moves;
 }
@@ -206,7 +207,7 @@ void Interpreter::attach_extra_axes(BlockContext& ctx, PathElement& e, std::vect
 }
 
 void Interpreter::emit_axis_waits(BlockContext& ctx) {
-  if (ctx.waits.empty() && !ctx.wait_all) return;
+  if (ctx.waits.empty()) return;
   PathElement e = element_template(ctx, ElementKind::AxisWait);
   e.wait_axes = std::move(ctx.waits);
   e.label = "WAIT";

@@ -35,6 +35,12 @@ inline int axis_index(std::string_view name) {
   return -1;
 }
 
+// The letters of further axes (A B C rotary, U V W linear by convention): a program may use them
+// on a machine whose profile lacks them (a warning, never an alarm).
+inline bool is_axis_letter_name(std::string_view n) {
+  return n.size() == 1 && std::string_view("ABCUVW").find(n[0]) != std::string_view::npos;
+}
+
 inline geometry::Plane to_geometry_plane(PlaneSelect plane) {
   switch (plane) {
     case PlaneSelect::G17: return geometry::Plane::G17;
@@ -107,7 +113,6 @@ struct Interpreter::BlockContext {
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block
   std::vector<std::string> waits;            // WAITP/WAITS and implicit waits, before the motion
-  bool wait_all = false;
 };
 
 
