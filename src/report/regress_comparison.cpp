@@ -60,14 +60,15 @@ void compare_program(std::vector<RegressChange>& out, const ProgramFigures& b, c
                      const RegressTolerances& t) {
   const std::string& p = n.program;
   if (b.error != n.error) out.push_back({p, "error", b.error.empty() ? "-" : b.error, n.error.empty() ? "-" : n.error, ""});
+  compare_diagnostics(out, p, "alarm", b.alarms, n.alarms);  // the cause before its effects
   if (b.complete != n.complete)
-    out.push_back({p, "complete", b.complete ? "yes" : "no", n.complete ? "yes" : "no", "stopped by an alarm"});
+    out.push_back({p, "complete", b.complete ? "yes" : "no", n.complete ? "yes" : "no",
+                   n.complete ? "runs to the end now" : "stopped by an alarm"});
   compare_value(out, p, "time", " s", b.time_s, n.time_s, t.time, 2);
   compare_value(out, p, "time after M0", " s", b.time_after_m0_s, n.time_after_m0_s, t.time, 2);
   compare_value(out, p, "lowest feed", " mm/min", b.min_feed_mm_min, n.min_feed_mm_min, t.feed, 1);
   compare_value(out, p, "path length", " mm", b.path_length_mm, n.path_length_mm, t.length, 3);
   compare_value(out, p, "feed dips", "", static_cast<double>(b.dips), static_cast<double>(n.dips), t.dips, 0);
-  compare_diagnostics(out, p, "alarm", b.alarms, n.alarms);
   compare_diagnostics(out, p, "warning", b.warnings, n.warnings);
 }
 
