@@ -9,6 +9,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -69,8 +70,11 @@ std::vector<RegressJob> make_jobs(const RegressOptions& o) {
 
 std::string junit_classname(const std::string& key) {
   std::string folder = fs::path(key).parent_path().generic_string();
-  for (char& c : folder)
-    if (c == '/' || c == '.') c = c == '/' ? '.' : '_';
+  // Folders become dotted packages (Jenkins groups by them); a dot of a name would split one.
+  for (char& c : folder) {
+    if (c == '.') c = '_';
+    else if (c == '/') c = '.';
+  }
   return folder.empty() ? "drycut.regress" : "drycut.regress." + folder;
 }
 
@@ -83,10 +87,12 @@ void write_junit(const std::string& path, const std::vector<RegressResult>& resu
       if (change.program == r.figures.program) c.failures.push_back(change.message());
     cases.push_back(std::move(c));
   }
-  // A program of the baseline that was not run fails as a case of its own.
+  // A change that belongs to no program of this run (one of the baseline that was not run, the
+  // machine) fails as a case of its own.
+  std::set<std::string> run;
+  for (const auto& r : results) run.insert(r.figures.program);
   for (const auto& change : changes)
-    if (change.what == "missing program")
-      cases.push_back({change.program, junit_classname(change.program), 0, {change.message()}});
+    if (!run.count(change.program)) cases.push_back({change.program, junit_classname(change.program), 0, {change.message()}});
   write_file(path, report::junit_xml("drycut regress", cases));
 }
 
