@@ -106,8 +106,11 @@ int run_regress(const RegressOptions& o) {
 
   const unsigned threads = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   auto display = report::ProgressDisplay::for_stderr(o.program.quiet);
-  const auto progress = [&display](size_t done, size_t total) {
-    display.show("  " + std::to_string(done) + " of " + std::to_string(total) + " programs");
+  const double start_s = report::ProgressDisplay::steady_seconds();
+  const auto progress = [&display, start_s](size_t done, size_t total) {
+    char elapsed[32];
+    std::snprintf(elapsed, sizeof elapsed, "  %.1f s", report::ProgressDisplay::steady_seconds() - start_s);
+    display.show("  " + std::to_string(done) + " of " + std::to_string(total) + " programs" + elapsed);
   };
   const std::vector<RegressResult> results = run_in_parallel(jobs, o.program, profile, threads, progress);
   display.finish();

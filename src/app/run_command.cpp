@@ -81,6 +81,7 @@ void register_run(CLI::App& app) {
       FilePtr json(nullptr, &std::fclose), trace(nullptr, &std::fclose);
       const bool lines = !o->ndjson_file.empty();
       const std::string& json_path = lines ? o->ndjson_file : o->json_file;
+      if (json_path == "-" && o->trace_file == "-") throw UsageError("--json/--ndjson and --trace cannot both be -");
       if (!json_path.empty()) json = open_output(json_path);
       if (!o->trace_file.empty()) trace = open_output(o->trace_file);
 

@@ -84,6 +84,8 @@ TEST_F(JsonSchemas, RunStreamedToStdoutIsTheSameDocument) {
   EXPECT_EQ(json::parse(streamed.out), json::parse(read_file(file)));
   // The text summary went to stderr, out of the way of the JSON.
   EXPECT_NE(read_file(err).find("path length"), std::string::npos);
+  // Two streams cannot share stdout.
+  EXPECT_EQ(run_drycut("run -q " + quoted(program("MAIN.MPF")) + " --json - --trace -").exit_code, 2);
 }
 
 TEST_F(JsonSchemas, EveryNdjsonLineMatchesTheSchema) {
