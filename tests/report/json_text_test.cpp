@@ -35,6 +35,11 @@ TEST(JsonText, NumbersAreRoundedWithoutTrailingZeros) {
   EXPECT_EQ(number(std::numeric_limits<double>::quiet_NaN(), 3), "null");
   EXPECT_EQ(number(std::numeric_limits<double>::infinity(), 3), "null");
   EXPECT_EQ(number(1e300, 2).size(), 301u);  // fixed notation, still a JSON number
+  EXPECT_EQ(number(2e18, 3), "2000000000000000000");  // beyond the scaled-integer path
+  EXPECT_EQ(number(0.05, 7), "0.05");
+  EXPECT_EQ(number(1.0000001, 7), "1.0000001");
+  EXPECT_EQ(number(-12.5, 0), "-13");  // half away from zero
+  EXPECT_EQ(number(0.1234567, 20), "0.12345670000000000255");  // more decimals than the fast path
   std::string i;
   append_json_integer(i, 18446744073709551615ull);
   EXPECT_EQ(i, "18446744073709551615");
