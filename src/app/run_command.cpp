@@ -1,5 +1,6 @@
-// `drycut run PROGRAM [--machine FILE] [--json FILE] [--trace FILE.csv]`: plans the program on the
-// machine and reports time, feed and dips.
+// `drycut run PROGRAM [--machine FILE] [--json FILE|-] [--ndjson FILE|-] [--trace FILE.csv]`:
+// plans the program on the machine and reports time, feed and dips. With the JSON on standard
+// output (`-`) the text summary goes to standard error, so the stream stays pure JSON.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -21,41 +22,45 @@ namespace {
 struct RunOptions {
   ProgramOptions program;
   std::string json_file;
+  std::string ndjson_file;
   std::string trace_file;
   size_t dips_shown = 10;
 };
 
 using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 
+int close_unless_stdout(std::FILE* f) { return f == stdout ? std::fflush(f) : std::fclose(f); }
+
 FilePtr open_output(const std::string& path) {
+  if (path == "-") return FilePtr(stdout, &close_unless_stdout);
   FilePtr f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) throw UsageError("cannot write " + path);
   return f;
 }
 
-void print_summary(const RunOptions& o, const machine::MachineProfile& profile, const motion::PlanSummary& s,
-                   const report::RunCompletion& completion) {
-  std::printf("%s on %s\n", std::filesystem::path(o.program.program).filename().string().c_str(), profile.name.c_str());
+void print_summary(std::FILE* out, const RunOptions& o, const machine::MachineProfile& profile,
+                   const motion::PlanSummary& s, const report::RunCompletion& completion) {
+  std::fprintf(out, "%s on %s\n", std::filesystem::path(o.program.program).filename().string().c_str(), profile.name.c_str());
   // A stopped run's figures are partial: say so before them, not after.
-  if (!completion.complete) std::printf("  INCOMPLETE: %s\n", report::incomplete_note(completion).c_str());
-  std::printf("  time               %9.2f s\n", s.time_s);
-  std::printf("  time after M0      %9.2f s\n", s.time_after_m0_s);
-  std::printf("  path length        %9.1f mm\n", s.path_length_mm);
-  std::printf("  feed while cutting %9.0f .. %.0f mm/min\n", s.min_feed_mm_s * 60, s.max_feed_mm_s * 60);
+  if (!completion.complete) std::fprintf(out, "  INCOMPLETE: %s\n", report::incomplete_note(completion).c_str());
+  std::fprintf(out, "  time               %9.2f s\n", s.time_s);
+  std::fprintf(out, "  time after M0      %9.2f s\n", s.time_after_m0_s);
+  std::fprintf(out, "  path length        %9.1f mm\n", s.path_length_mm);
+  std::fprintf(out, "  feed while cutting %9.0f .. %.0f mm/min\n", s.min_feed_mm_s * 60, s.max_feed_mm_s * 60);
   const size_t total_dips = s.dips.size() + s.dips_not_listed;
-  std::printf("  feed dips below 80 %% of F: %zu\n", total_dips);
+  std::fprintf(out, "  feed dips below 80 %% of F: %zu\n", total_dips);
   std::vector<const motion::FeedDip*> dips;
   for (const auto& d : s.dips) dips.push_back(&d);
   std::sort(dips.begin(), dips.end(), [](auto* a, auto* b) { return a->v_min_mm_s < b->v_min_mm_s; });
   for (size_t i = 0; i < std::min(dips.size(), o.dips_shown); ++i) {
     const auto& d = *dips[i];
     std::string block = d.min_source.text.size() > 40 ? d.min_source.text.substr(0, 37) + "..." : d.min_source.text;
-    std::printf("    %s:%u  %6.0f of %.0f mm/min  %-11s %s\n",
+    std::fprintf(out, "    %s:%u  %6.0f of %.0f mm/min  %-11s %s\n",
                 std::filesystem::path(d.min_source.file_name()).filename().string().c_str(), d.min_source.line,
                 d.v_min_mm_s * 60, d.programmed_feed_mm_s * 60, std::string(motion::to_string(d.limit)).c_str(),
                 block.c_str());
   }
-  if (dips.size() > o.dips_shown) std::printf("    ... %zu more (see --json)\n", total_dips - o.dips_shown);
+  if (dips.size() > o.dips_shown) std::fprintf(out, "    ... %zu more (see --json)\n", total_dips - o.dips_shown);
 }
 
 }  // namespace
@@ -64,20 +69,28 @@ void register_run(CLI::App& app) {
   auto o = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Plan the program on the machine: time, feed, dips and their causes");
   add_program_options(*cmd, o->program);
-  cmd->add_option("--json", o->json_file, "Write the JSON report (summary, per-block rows, dips, alarms)");
+  CLI::Option* json_option = cmd->add_option(
+      "--json", o->json_file, "Write the JSON report (summary, per-block rows, dips, alarms); - for standard output");
+  cmd->add_option("--ndjson", o->ndjson_file, "Write the report as one JSON object per line; - for standard output")
+      ->excludes(json_option);
   cmd->add_option("--trace", o->trace_file, "Write one CSV row per IPO cycle");
   cmd->add_option("--dips", o->dips_shown, "Dips listed in the summary")->default_val(10);
   cmd->callback([o] {
     try {
       const machine::MachineProfile profile = load_machine(o->program);
       FilePtr json(nullptr, &std::fclose), trace(nullptr, &std::fclose);
-      if (!o->json_file.empty()) json = open_output(o->json_file);
+      const bool lines = !o->ndjson_file.empty();
+      const std::string& json_path = lines ? o->ndjson_file : o->json_file;
+      if (json_path == "-" && o->trace_file == "-") throw UsageError("--json/--ndjson and --trace cannot both be -");
+      if (!json_path.empty()) json = open_output(json_path);
       if (!o->trace_file.empty()) trace = open_output(o->trace_file);
 
       motion::PlanObserver none;
       std::unique_ptr<report::RunReportWriter> report;
       std::unique_ptr<report::TraceCsvWriter> tracer;
-      if (json) report = std::make_unique<report::RunReportWriter>(json.get(), o->program.program, profile.name);
+      if (json) report = std::make_unique<report::RunReportWriter>(
+            json.get(), lines ? report::RunJsonLayout::Lines : report::RunJsonLayout::Document, o->program.program,
+            profile.name);
       if (trace) tracer = std::make_unique<report::TraceCsvWriter>(trace.get());
       motion::PlanObserver& a = report ? static_cast<motion::PlanObserver&>(*report) : none;
       motion::PlanObserver& b = tracer ? static_cast<motion::PlanObserver&>(*tracer) : none;
@@ -95,7 +108,8 @@ void register_run(CLI::App& app) {
       const motion::PlanSummary& summary = planner.summary();
       const report::RunCompletion completion = report::run_completion(outcome.diagnostics.items(), outcome.alarm);
       if (report) report->finish(summary, outcome.diagnostics, completion, end_position);
-      print_summary(*o, profile, summary, completion);
+      const bool stdout_taken = json_path == "-" || o->trace_file == "-";
+      print_summary(stdout_taken ? stderr : stdout, *o, profile, summary, completion);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut run: %s\n", e.what());

@@ -34,6 +34,16 @@ void ProgressDisplay::update(uint64_t blocks, double simulated_s) {
   std::fflush(out_);
 }
 
+void ProgressDisplay::show(const std::string& text) {
+  if (!enabled_) return;
+  const double now = clock_();
+  if (now - start_ < kDelay_s || now - last_draw_ < kInterval_s) return;
+  last_draw_ = now;
+  shown_ = true;
+  std::fprintf(out_, "\r%s\x1b[K", text.c_str());
+  std::fflush(out_);
+}
+
 void ProgressDisplay::finish() {
   if (!shown_) return;
   std::fputs("\r\x1b[K", out_);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <string>
 
 namespace drycut::report {
 
@@ -22,6 +23,9 @@ class ProgressDisplay {
 
   // Cheap to call every block: the clock is read only every `kCallsPerCheck` calls.
   void update(uint64_t blocks, double simulated_s = -1.0);
+  // Draws `text` in place of the block count, with the same delay and redraw interval (for
+  // callers that count something else, e.g. programs done). Call it a few times a second.
+  void show(const std::string& text);
   // Clears the line if one was drawn (also done by the destructor).
   void finish();
 

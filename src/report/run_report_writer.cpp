@@ -2,24 +2,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "report/json_text.hpp"
+
 namespace drycut::report {
 
 using nlohmann::json;
 
 namespace {
 constexpr double kMinPerS = 60.0;
-
-json block_json(const motion::BlockTiming& t) {
-  return json{{"file", t.source.file_name()},
-              {"line", t.source.line},
-              {"label", t.label},
-              {"time_s", t.time_s},
-              {"length_mm", t.length_mm},
-              {"v_max_mm_min", t.v_max_mm_s * kMinPerS},
-              {"v_min_mm_min", t.v_min_mm_s * kMinPerS},
-              {"limit", std::string(motion::to_string(t.limit))},
-              {"rapid", t.rapid}};
-}
+constexpr int kFormatVersion = 2;
+// Row resolution: far finer than the control's (1 µm positions, ms IPO cycles), coarse enough
+// that a row of a 1 M-block program is about 60 bytes.
+constexpr int kTimeDecimals = 7;    // 0.1 µs
+constexpr int kLengthDecimals = 6;  // 1 nm
+constexpr int kFeedDecimals = 3;    // 0.001 mm/min
 
 json summary_object(const motion::PlanSummary& s) {
   return json{{"time_s", s.time_s},
@@ -48,44 +44,131 @@ json alarm_object(const Alarm& a) {
               {"block", a.block}};
 }
 
+json dip_object(const motion::FeedDip& d) {
+  return json{{"file", d.min_source.file_name()},
+              {"line", d.min_source.line},
+              {"block", d.min_source.text},
+              {"first_line", d.source.line},
+              {"v_min_mm_min", d.v_min_mm_s * kMinPerS},
+              {"programmed_feed_mm_min", d.programmed_feed_mm_s * kMinPerS},
+              {"limit", std::string(motion::to_string(d.limit))},
+              {"elements", d.element_count}};
+}
+
 // Block texts come from shop files: replace invalid UTF-8 instead of failing the report.
 std::string dump(const json& j, int indent = -1) { return j.dump(indent, ' ', false, json::error_handler_t::replace); }
 
+// A Lines object: {"type": TYPE, ...fields of `fields`}.
+std::string typed_line(const char* type, const json& fields) {
+  nlohmann::ordered_json line{{"type", type}};  // "type" first, for people reading the stream
+  for (const auto& [key, value] : fields.items()) line[key] = value;
+  return line.dump(-1, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
 }  // namespace
+
+const std::vector<std::string>& block_columns() {
+  static const std::vector<std::string> kColumns{"file",         "line",         "label", "time_s", "length_mm",
+                                                 "v_max_mm_min", "v_min_mm_min", "limit", "rapid"};
+  return kColumns;
+}
 
 std::string summary_json(const motion::PlanSummary& summary, int indent) { return dump(summary_object(summary), indent); }
 std::string alarm_json(const Alarm& alarm) { return dump(alarm_object(alarm)); }
 
-RunReportWriter::RunReportWriter(std::FILE* out, const std::string& program, const std::string& machine)
-    : out_(out) {
-  std::fprintf(out_, "{\n\"program\": %s,\n\"machine\": %s,\n\"blocks\": [\n", dump(json(program)).c_str(),
-               dump(json(machine)).c_str());
+RunReportWriter::RunReportWriter(std::FILE* out, RunJsonLayout layout, const std::string& program,
+                                 const std::string& machine)
+    : out_(out), layout_(layout) {
+  buffer_.reserve(kFlushBytes + 4096);
+  if (layout_ == RunJsonLayout::Lines) {
+    buffer_ += typed_line("run", json{{"format", "drycut-run-ndjson"},
+                                      {"version", kFormatVersion},
+                                      {"program", program},
+                                      {"machine", machine}});
+    return;
+  }
+  buffer_ += "{\n\"format\": \"drycut-run\",\n\"version\": " + std::to_string(kFormatVersion) +
+             ",\n\"program\": " + dump(json(program)) + ",\n\"machine\": " + dump(json(machine)) +
+             ",\n\"block_columns\": " + dump(json(block_columns())) + ",\n\"blocks\": [\n";
 }
 
-void RunReportWriter::on_block(const motion::BlockTiming& timing) {
-  std::fprintf(out_, "%s%s", first_row_ ? "" : ",\n", dump(block_json(timing)).c_str());
+size_t RunReportWriter::file_index(const BlockRef& source) {
+  if (source.file && source.file == last_file_) return last_file_id_;
+  const std::string& path = source.file_name();
+  auto [it, added] = file_ids_.try_emplace(path, files_.size());
+  if (added) {
+    files_.push_back(path);
+    if (layout_ == RunJsonLayout::Lines) buffer_ += typed_line("file", json{{"id", it->second}, {"path", path}});
+  }
+  last_file_ = source.file;
+  last_file_id_ = it->second;
+  return it->second;
+}
+
+const std::string& RunReportWriter::escaped_label(const std::string& label) {
+  auto it = labels_.find(label);
+  if (it != labels_.end()) return it->second;
+  if (labels_.size() > 4096) labels_.clear();  // labels carry tool names: bound the cache
+  std::string text;
+  append_json_string(text, label);
+  return labels_.emplace(label, std::move(text)).first->second;
+}
+
+void RunReportWriter::on_block(const motion::BlockTiming& t) {
+  const size_t file = file_index(t.source);
+  const bool lines = layout_ == RunJsonLayout::Lines;
+  std::string& b = buffer_;
+  if (lines) {
+    b += "{\"type\":\"block\",\"file\":";
+  } else {
+    b += first_row_ ? "[" : ",\n[";
+  }
+  append_json_integer(b, file);
+  b += lines ? ",\"line\":" : ",";
+  append_json_integer(b, t.source.line);
+  b += lines ? ",\"label\":" : ",";
+  b += escaped_label(t.label);
+  b += lines ? ",\"time_s\":" : ",";
+  append_json_number(b, t.time_s, kTimeDecimals);
+  b += lines ? ",\"length_mm\":" : ",";
+  append_json_number(b, t.length_mm, kLengthDecimals);
+  b += lines ? ",\"v_max_mm_min\":" : ",";
+  append_json_number(b, t.v_max_mm_s * kMinPerS, kFeedDecimals);
+  b += lines ? ",\"v_min_mm_min\":" : ",";
+  append_json_number(b, t.v_min_mm_s * kMinPerS, kFeedDecimals);
+  b += lines ? ",\"limit\":\"" : ",\"";
+  b += motion::to_string(t.limit);
+  b += lines ? "\",\"rapid\":" : "\",";
+  b += t.rapid ? "true" : "false";
+  b += lines ? "}\n" : "]";
   first_row_ = false;
+  if (b.size() >= kFlushBytes) flush();
+}
+
+void RunReportWriter::flush() {
+  if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+  buffer_.clear();
 }
 
 void RunReportWriter::finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics,
                              const RunCompletion& completion, const std::optional<motion::Vec3>& end_position_mm) {
   json dips = json::array();
-  for (const auto& d : summary.dips)
-    dips.push_back({{"file", d.min_source.file_name()},
-                    {"line", d.min_source.line},
-                    {"block", d.min_source.text},
-                    {"first_line", d.source.line},
-                    {"v_min_mm_min", d.v_min_mm_s * kMinPerS},
-                    {"programmed_feed_mm_min", d.programmed_feed_mm_s * kMinPerS},
-                    {"limit", std::string(motion::to_string(d.limit))},
-                    {"elements", d.element_count}});
+  for (const auto& d : summary.dips) dips.push_back(dip_object(d));
   json alarms = json::array(), warnings = json::array();
   for (const auto& a : diagnostics.items()) (a.severity == Severity::Warning ? warnings : alarms).push_back(alarm_object(a));
   json summary_with_outcome = summary_object(summary);
   add_outcome(summary_with_outcome, completion, end_position_mm);
-  std::fprintf(out_, "\n],\n\"summary\": %s,\n\"dips\": %s,\n\"alarms\": %s,\n\"warnings\": %s\n}\n",
-               dump(summary_with_outcome, 2).c_str(), dump(dips, 2).c_str(), dump(alarms, 2).c_str(),
-               dump(warnings, 2).c_str());
+  if (layout_ == RunJsonLayout::Lines) {
+    for (const auto& d : dips) buffer_ += typed_line("dip", d);
+    for (const auto& a : alarms) buffer_ += typed_line("alarm", a);
+    for (const auto& w : warnings) buffer_ += typed_line("warning", w);
+    buffer_ += typed_line("summary", summary_with_outcome);
+  } else {
+    buffer_ += "\n],\n\"files\": " + dump(json(files_)) + ",\n\"summary\": " + dump(summary_with_outcome, 2) +
+               ",\n\"dips\": " + dump(dips, 2) + ",\n\"alarms\": " + dump(alarms, 2) +
+               ",\n\"warnings\": " + dump(warnings, 2) + "\n}\n";
+  }
+  flush();
   std::fflush(out_);
 }
 

@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -126,8 +127,16 @@ TEST(CamFinishingProgram, ChecksAndRunsWithTheHandComputedBlocksAndLength) {
   // G0 Z50, G0 SUPA Z280); drycut plans G642 like G64, so its path is that polyline.
   const auto& s = j["summary"];
   EXPECT_NEAR(s["path_length_mm"].get<double>(), generated_path, 1e-3);
+  // Block rows are arrays in the order of "block_columns" (docs/schemas/run.schema.json).
+  const auto& columns = j["block_columns"];
+  const auto column = [&columns](const char* name) {
+    return static_cast<size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  const size_t rapid = column("rapid"), length = column("length_mm");
+  ASSERT_LT(rapid, columns.size());
+  ASSERT_LT(length, columns.size());
   double g1 = 0, g0 = 0;
-  for (const auto& row : j["blocks"]) (row["rapid"].get<bool>() ? g0 : g1) += row["length_mm"].get<double>();
+  for (const auto& row : j["blocks"]) (row[rapid].get<bool>() ? g0 : g1) += row[length].get<double>();
   EXPECT_NEAR(g1, generated_g1, 1e-3);
 
   // End: the last point X80 Y60 of the workpiece, turned by AROT Z15 and shifted by TRANS X50
