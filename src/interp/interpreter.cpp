@@ -29,6 +29,7 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
   for (int i = 0; i < kSettableFrames; ++i) {
     settable_frames_[static_cast<size_t>(i)] = profile_settable_frame(profile, i);
     settable_defined_[static_cast<size_t>(i)] = profile_has_settable_frame(profile, i);
+    settable_components_[static_cast<size_t>(i)] = profile_frame_components(profile, i);
   }
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "interp/extra_axes.hpp"
+#include "interp/frame_components.hpp"
 #include "interp/modal_state.hpp"
 #include "interp/path_element.hpp"
 #include "interp/spline_block_quota.hpp"
@@ -72,6 +73,8 @@ class Interpreter {
   };
 
   void apply_system_writes(const parser::Block& block);  // system_variable_writes.cpp
+  // $P_UIFR[n] = frame / $P_UIFR[n, axis, component] = value, $P_PFRAME = frame; false: not one.
+  bool write_frame_variable(const parser::Block& block, const parser::SystemWrite& write);
   void apply_modal_save(parser::ModalSave what);         // PROC ... SAVE
   void apply_g_words(BlockContext& ctx);
   void apply_commands(BlockContext& ctx);
@@ -156,6 +159,7 @@ class Interpreter {
   Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
   std::array<Frame, kSettableFrames> settable_frames_;  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};
+  std::array<FrameComponents, kSettableFrames> settable_components_;  // what $P_UIFR[n, ax, TR] writes
 };
 
 }  // namespace drycut::interp

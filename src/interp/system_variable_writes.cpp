@@ -1,7 +1,9 @@
 // `$` system variables the program writes and the interpreter models: tool data $TC_DP3
-// (length) and $TC_DP6 (radius) of tool t, edge d. Frame variables ($P_UIFR, $P_PFRAME) are
-// accepted: their FRAME values are not computed (docs/language.md), so they warn. Other writes
-// were kept by the loader (later reads see them) and change nothing drycut times.
+// (length) and $TC_DP6 (radius) of tool t, edge d; settable frames $P_UIFR[n] (whole, from a
+// frame function, or by component $P_UIFR[n, X, TR]; effective when next selected) and the
+// programmable frame $P_PFRAME (at once) — frame_components.hpp. Other frame writes ($P_BFRAME,
+// component writes of $P_PFRAME, chained frame expressions) warn. Other writes were kept by the
+// loader (later reads see them) and change nothing drycut times.
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
 
@@ -24,10 +26,48 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
         diagnostics_.warn(kNotModelled, w.name + ": index outside the tool table's range", where, block.text);
       continue;
     }
+    if (write_frame_variable(block, w)) continue;
     if ((w.name == "$P_UIFR" || w.name == "$P_PFRAME" || w.name == "$P_BFRAME") && warned_.insert(w.name).second)
-      diagnostics_.warn(kNotModelled, w.name + " written: FRAME values are not computed, the frame stays as it was",
+      diagnostics_.warn(kNotModelled, w.name + " written in a form drycut does not compute: the frame stays as it was",
                         where, block.text);
   }
+}
+
+bool Interpreter::write_frame_variable(const parser::Block& block, const parser::SystemWrite& w) {
+  const bool settable = w.name == "$P_UIFR";
+  if (!settable && w.name != "$P_PFRAME") return false;
+  const size_t first = settable ? 1 : 0;  // $P_UIFR[n, ...]: n first
+  if (w.indices.size() != first && w.indices.size() != first + 2) return false;
+  int n = 0;
+  if (settable) {
+    if (!w.indices[0].is_number() || !(w.indices[0].number >= 0 && w.indices[0].number < kSettableFrames)) return false;
+    n = static_cast<int>(w.indices[0].number);
+  }
+  FrameComponents components = settable ? settable_components_[static_cast<size_t>(n)] : FrameComponents{};
+  if (w.indices.size() == first + 2) {  // [.., axis, component] = value
+    if (!settable || !w.value.is_number()) return false;  // $P_PFRAME components: not kept as components
+    const int axis = detail::axis_index(w.indices[first].text);
+    const std::string& component = w.indices[first + 1].text;
+    const bool length = component == "TR" || component == "FI";
+    if (axis < 0 || !components.set(axis, component, w.value.number * (length ? geometry_unit() : 1.0))) return false;
+  } else {
+    if (w.value.kind != parser::ValueKind::Frame || w.value.text.empty()) return false;
+    const std::string error = components.assign(w.value.text, geometry_unit());
+    if (!error.empty()) {
+      const SourceLocation where{block.file ? *block.file : std::string(), block.line, w.column};
+      diagnostics_.warn(kNotModelled, w.name + ": " + error + " (the frame stays as it was)", where, block.text);
+      return true;
+    }
+  }
+  const Frame frame = components.frame();
+  if (!frame.invertible()) return false;
+  if (settable) {
+    settable_components_[static_cast<size_t>(n)] = components;
+    set_settable_frame(n, frame);
+  } else {
+    set_programmable_frame(frame);
+  }
+  return true;
 }
 
 }  // namespace drycut::interp

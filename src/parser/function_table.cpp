@@ -40,7 +40,7 @@ constexpr std::array kFunctions{
     FunctionInfo{"AXSTRING", F::AxString, 1, 1, "the name of an axis as a string"},
     FunctionInfo{"ISVAR", F::IsVar, 1, 1, "TRUE when the string names a known variable"},
     FunctionInfo{"GETT", F::GetT, 1, 2, "GETT(name[, duplo]): T number of a named tool"},
-    FunctionInfo{"CTRANS", F::FrameFunction, 0, 30, "frame with translations (FRAME values: see the table)"},
+    FunctionInfo{"CTRANS", F::FrameFunction, 0, 30, "frame with translations"},
     FunctionInfo{"CROT", F::FrameFunction, 0, 30, "frame with rotations"},
     FunctionInfo{"CSCALE", F::FrameFunction, 0, 30, "frame with scale factors"},
     FunctionInfo{"CMIRROR", F::FrameFunction, 0, 30, "frame with mirrored axes"},

@@ -30,6 +30,7 @@ constexpr std::array kSyntax{
     Row{"POS[ax]= POSA[ax]= FA[ax]= WAITP(ax)", M, "positioning axes on their own interpolator, their feed, waiting for them"},
     Row{"SPOS= SPOS[n]= SPOSA= WAITS", M, "spindle positioning (position control) and waiting for it"},
     Row{"FGROUP(ax, ...)", M, "the axes whose travel the path feed F refers to"},
+    Row{"$P_UIFR[n]=CTRANS(..) / $P_UIFR[n,ax,TR|FI|RT|SC|MI]=v / $P_PFRAME=CROT(..)", M, "settable frame (effective at its next selection) and programmable frame (at once), whole or by component"},
     Row{"X1= S1= M2=3 H7=40", M, "extended addresses: axis names, spindle/auxiliary function numbers"},
     Row{"G[group]=n", M, "indirect G code by group and internal number (groups 1 6 7 8 10 12 13 14 15 18)"},
     Row{"M[n]= S[n]= H[n]= T[n]= D[n]=", M, "address extension as an expression"},
@@ -95,8 +96,8 @@ std::vector<LanguageFeature> language_features() {
   for (const Row& r : kOperators) add(out, "Operators", r.name, r.support, r.meaning);
   for (const FunctionInfo& f : all_functions()) {
     const bool frame = f.func == Function::FrameFunction;
-    add(out, "Functions", std::string(f.name), frame ? Support::NotModelled : Support::Modelled,
-        std::string(f.meaning) + (frame ? " (the FRAME value is not computed)" : ""));
+    add(out, "Functions", std::string(f.name), Support::Modelled,
+        std::string(f.meaning) + (frame ? " (computed where $P_UIFR/$P_PFRAME is written; `:` chains are not)" : ""));
   }
   for (const CommandInfo& c : all_commands()) add(out, "Commands", std::string(c.name), c.support, "");
   add(out, "Commands", "CYCLEnnn, POCKETn, SLOTn, HOLESn ...", Support::Modelled,

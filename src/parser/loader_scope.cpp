@@ -2,6 +2,7 @@
 // variables through the registry, TRUE/FALSE, and bare axis names (AXIS values: X, Y1, AX3).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "parser/line_error.hpp"
 #include "parser/loader_frame.hpp"
@@ -74,6 +75,8 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
   if (indices.empty()) {
     if (name == "TRUE") return Value(1.0);
     if (name == "FALSE") return Value(0.0);
+    // Frame components as indices of frame variables: $P_UIFR[1, X, TR] (PGA "Frame components").
+    if (name == "TR" || name == "FI" || name == "RT" || name == "SC" || name == "MI") return Value::of_text(std::string(name));
     if (l.is_axis_name(name)) return Value::of_axis(std::string(name));
   }
   throw LineError(12550, column, "name " + std::string(name) + " not defined");
@@ -106,9 +109,26 @@ Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span
       if (r.assumed) l.warn(990007, "GETT(\"" + args[0].text + "\"): tool table not available, -1 assumed", call.column);
       return r.assumed ? Value(-1.0) : r.value;
     }
-    default:
-      l.warn_not_modelled("FRAME expression " + std::string(call.text) + "() (frame values are not computed)", call.column);
-      return Value::of_frame();
+    default: {
+      // A frame function: the FRAME value carries its own text, "CTRANS(X,10,Y,5)", which the
+      // interpreter computes where the frame is written ($P_UIFR, $P_PFRAME; frame_components.hpp).
+      std::string text(call.text);
+      text += '(';
+      char buf[32];
+      for (size_t k = 0; k < args.size(); ++k) {
+        if (k > 0) text += ',';
+        if (args[k].is_number()) {
+          std::snprintf(buf, sizeof buf, "%.17g", args[k].number);
+          text += buf;
+        } else {
+          text += args[k].text;
+        }
+      }
+      text += ')';
+      Value v = Value::of_frame();
+      v.text = std::move(text);
+      return v;
+    }
   }
 }
 

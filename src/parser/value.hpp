@@ -1,7 +1,8 @@
 #pragma once
 // A value of the NC language while an expression is evaluated: a number (INT, REAL, BOOL and
 // CHAR are numbers; CHAR holds its character code) or a text (STRING; AXIS holds the axis name;
-// FRAME is opaque, see docs/language.md). Conversions follow the PGA "data types" table:
+// FRAME carries the text of the frame function that made it, "CTRANS(X,10)", computed by the
+// interpreter where a frame variable is written; see docs/language.md). Conversions follow the PGA "data types" table:
 // REAL -> INT rounds half away from zero, any number -> BOOL is "not zero", a number becomes a
 // text only through `<<` or SPRINT.
 #include <cstdint>

@@ -1,0 +1,42 @@
+#pragma once
+// A frame by its components, as programs write settable frames (PGA Job Planning "Frames",
+// "Frame components" and "Frame functions"):
+//   $P_UIFR[n, X, TR] = 10      coarse translation      $P_UIFR[n, X, FI] = 0.01  fine translation
+//   $P_UIFR[n, Z, RT] = 30      rotation (degrees)      $P_UIFR[n, X, SC] = 2     scale factor
+//   $P_UIFR[n, X, MI] = 1       mirror                  $P_UIFR[n] = CTRANS(X, 10, Y, 5) (whole)
+// The frame they make: the translation (coarse + fine) outermost, then the rotation (RPY about
+// X, Y, Z like ROT), the scale, the mirror innermost — the order of the settable frames in the
+// profile (frame_chain.cpp) and of TRANS/ROT/SCALE/MIRROR in one frame.
+// A whole-frame value arrives from the loader as text "CTRANS(X,10,Y,5)" (parser FRAME values);
+// the `:` chaining of frame functions is not read (such a value is refused: a warning).
+#include <array>
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "interp/frame.hpp"
+#include "machine/machine_profile.hpp"
+
+namespace drycut::interp {
+
+struct FrameComponents {
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  Eigen::Vector3d fine = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rotation_deg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  std::array<bool, 3> mirror{};
+
+  Frame frame() const;
+  // Sets component "TR", "FI", "RT", "SC" or "MI" of axis 0..2 (lengths already in mm); false
+  // for an unknown component.
+  bool set(int axis, std::string_view component, double value);
+  // A whole frame from a frame function's text ("CTRANS(X,10,Y,5)"); `unit` converts lengths to
+  // mm. Returns an error text, empty on success.
+  std::string assign(std::string_view description, double unit);
+};
+
+// The components of settable frame `index` in the machine profile (translation and rotation).
+FrameComponents profile_frame_components(const machine::MachineProfile& profile, int index);
+
+}  // namespace drycut::interp
