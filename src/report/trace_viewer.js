@@ -2,8 +2,8 @@
 // build time and inlined into each report after three.js and its OrbitControls).
 //
 // Data: the JSON script element with id trace-data (format in html_trace_viewer.hpp).
-// Scene: the trace is shifted so its bounding-box centre is the origin (float32 positions keep
-// micrometres); Z is up. Cutting moves are line segments coloured by the velocity bin of their
+// Scene: the trace is shifted so the centre of the framed box is the origin (float32 positions
+// keep micrometres); Z is up. Cutting moves are line segments coloured by the velocity bin of their
 // end sample (the top view's colours), rapids grey dashed segments, the worst dips red balls
 // with their rank as a label, the tool a cone whose tip is the tool centre.
 // Playback: the position is a sample index (the slider's value); playing advances the time by
@@ -11,7 +11,8 @@
 // Self-test (location hash contains "selftest"; used by the browser test): renders once, reads
 // the pixels back (preserveDrawingBuffer) and checks that pixels at projected path samples are
 // painted while pixels away from the path are background, then moves the playback bar from the
-// first to the last sample and checks that the shown block changes; the verdict is written into
+// first to the last sample and checks that the shown block changes (and that shift + left arrow
+// goes back a block); the verdict is written into
 // the pre element with id trace-selftest, which `chromium --dump-dom` prints.
 (function () {
   'use strict';
@@ -34,12 +35,20 @@
     V[i] = D.p[k + 4]; B[i] = D.p[k + 5]; R[i] = D.p[k + 6];
   }
 
-  // Bounding box and centre; `size` scales markers, camera distance and dashes.
-  var lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
-  for (i = 0; i < n; ++i) {
-    var q = [X[i], Y[i], Z[i]];
-    for (var a = 0; a < 3; ++a) { lo[a] = Math.min(lo[a], q[a]); hi[a] = Math.max(hi[a], q[a]); }
-  }
+  // The framed box: per axis the 5th to 95th percentile of the kept samples in motion. They are
+  // about evenly spread in time (the decimator keeps two per stretch of equal sample count), so
+  // this is where the tool spends 90 % of its moving time: the part, not a long approach,
+  // retract or a standstill at the tool change position. `size` scales the markers, the camera
+  // distance and the dashes.
+  var moving = [];
+  for (i = 0; i < n; ++i) if (V[i] > 0) moving.push(i);
+  if (moving.length < 2) moving = Array.from({ length: n }, function (_, j) { return j; });
+  var lo = [], hi = [];
+  [X, Y, Z].forEach(function (axis) {
+    var sorted = moving.map(function (j) { return axis[j]; }).sort(function (u, w) { return u - w; });
+    lo.push(sorted[Math.floor(0.05 * (sorted.length - 1))]);
+    hi.push(sorted[Math.ceil(0.95 * (sorted.length - 1))]);
+  });
   var centre = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
   var size = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-3);
   function local(j) { return new THREE.Vector3(X[j] - centre[0], Y[j] - centre[1], Z[j] - centre[2]); }
@@ -165,7 +174,9 @@
   scene.add(tool);
 
   // Views: the whole trace fits the window.
-  var fitDistance = size * 0.62 / Math.tan(20 * Math.PI / 180);  // half the 40 degree field of view
+  // The framed box's bounding sphere fits the 40 degree vertical field of view.
+  var radius = Math.max(0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
+  var fitDistance = 1.05 * radius / Math.sin(20 * Math.PI / 180);
   function view(dir) {
     var d = new THREE.Vector3(dir[0], dir[1], dir[2]).normalize().multiplyScalar(fitDistance);
     controls.target.set(0, 0, 0);
@@ -212,8 +223,8 @@
     $('trace-block').textContent = b[2];
     $('trace-where').textContent = (D.files[b[0]] || '') + ':' + b[1];
     $('trace-time').textContent = T[current].toFixed(3) + ' s of ' + total.toFixed(3) + ' s';
-    $('trace-feed').textContent = R[current] ? 'rapid, ' + feedText(V[current])
-                                             : feedText(V[current]) + ' (F ' + feedText(b[3]) + ')';
+    $('trace-feed').textContent = 'v ' + feedText(V[current]) +
+        (R[current] ? ', rapid' : ', F ' + feedText(b[3])) + ' (tool centre)';
     requestRender();
   }
   function setPlaying(on) {
@@ -318,10 +329,16 @@
     var screen = [], v = new THREE.Vector3();
     for (var j = 0; j < n; ++j) {
       v.copy(local(j)).project(camera);
-      screen.push([Math.round((v.x + 1) / 2 * w), Math.round((1 - v.y) / 2 * h)]);
+      screen.push([Math.round((v.x + 1) / 2 * w), Math.round((1 - v.y) / 2 * h), v.z]);
     }
     var tried = 0, hit = 0, control = 0, controlPainted = 0, step = Math.max(1, Math.floor(n / 200));
-    for (j = 0; j < n; j += step) { ++tried; if (painted(screen[j][0], screen[j][1], 2)) ++hit; }
+    var sampled = 0;
+    for (j = 0; j < n; j += step) {  // samples framed out of the view do not count
+      ++sampled;
+      if (screen[j][0] < 0 || screen[j][0] >= w || screen[j][1] < 0 || screen[j][1] >= h || screen[j][2] >= 1) continue;
+      ++tried;
+      if (painted(screen[j][0], screen[j][1], 2)) ++hit;
+    }
     // Control points: a grid over the canvas, kept where no path sample projects within 25 px.
     for (var gy = 10; gy < h; gy += 40)
       for (var gx = 10; gx < w; gx += 40) {
@@ -341,13 +358,19 @@
     slider.dispatchEvent(new Event('input'));
     var last = $('trace-where').textContent + ' ' + $('trace-block').textContent;
     var moved = tool.position.distanceTo(firstTool) > 0;
-    var ok = tried > 0 && hit >= 0.9 * tried && control > 0 && controlPainted <= 0.05 * control &&
-             first !== last && moved;
+    // The keyboard: shift + left arrow goes back one block, End returns to the last sample.
+    root.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowLeft', shiftKey: true }));
+    var back = $('trace-where').textContent + ' ' + $('trace-block').textContent;
+    root.dispatchEvent(new KeyboardEvent('keydown', { key: 'End' }));
+    var keys = back !== last && Number(slider.value) === n - 1;
+    var ok = tried >= 0.5 * sampled && hit >= 0.9 * tried && control > 0 && controlPainted <= 0.05 * control &&
+             first !== last && moved && keys;
     var out = document.createElement('pre');
     out.id = 'trace-selftest';
-    out.textContent = 'path samples painted ' + hit + '/' + tried + '; control points painted ' + controlPainted +
+    out.textContent = 'path samples painted ' + hit + '/' + tried + ' (' + sampled + ' tried, ' + tried +
+        ' in view); control points painted ' + controlPainted +
         '/' + control + '; painted pixels ' + paintedPixels + '; block at start [' + first + ']; block at end [' + last +
-        ']; tool moved ' + moved + '; VERDICT ' + (ok ? 'PASS' : 'FAIL');
+        ']; tool moved ' + moved + '; shift+left shows [' + back + ']; VERDICT ' + (ok ? 'PASS' : 'FAIL');
     root.appendChild(out);
   }
 })();
