@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <string_view>
 #include <nlohmann/json.hpp>
 
 #include "report/html_escape.hpp"

@@ -20,8 +20,8 @@ void Trace3dCollector::on_block(const motion::BlockTiming& timing) {
 }
 
 void Trace3dCollector::on_sample(const motion::TrajectorySample& sample) {
-  auto known = blocks_.find(block_seq_);
-  if (known == blocks_.end()) {
+  // Node-based map: the current block's entry stays put when the map grows, and pruning keeps it.
+  if (!current_ || current_seq_ != block_seq_) {
     TraceBlock b;
     if (sample.source) {
       b.file = sample.source->file;
@@ -32,7 +32,8 @@ void Trace3dCollector::on_sample(const motion::TrajectorySample& sample) {
       b.feed_mm_s = pending_.front().feed_mm_s;
       b.rapid = pending_.front().rapid;
     }
-    known = blocks_.emplace(block_seq_, std::move(b)).first;
+    current_ = &blocks_.insert_or_assign(block_seq_, std::move(b)).first->second;
+    current_seq_ = block_seq_;
   }
   TracePoint p;
   p.x = sample.position.x();
@@ -41,7 +42,7 @@ void Trace3dCollector::on_sample(const motion::TrajectorySample& sample) {
   p.t = sample.t_s;
   p.v = p.value = sample.v_mm_s;
   p.block = block_seq_;
-  p.rapid = known->second.rapid;
+  p.rapid = current_->rapid;
   points_.add(p);
   if (blocks_.size() > prune_at_) forget_unreferenced_blocks();
 }

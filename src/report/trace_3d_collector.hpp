@@ -49,6 +49,8 @@ struct Trace3d {
 class Trace3dCollector {
  public:
   explicit Trace3dCollector(size_t buckets = 4000);
+  Trace3dCollector(const Trace3dCollector&) = delete;  // holds a pointer into its own map
+  Trace3dCollector& operator=(const Trace3dCollector&) = delete;
 
   void on_tool_centre(const interp::PathElement& element);
   void on_block(const motion::BlockTiming& timing);
@@ -69,6 +71,8 @@ class Trace3dCollector {
   ExtremaDecimator<TracePoint> points_;
   std::unordered_map<uint64_t, TraceBlock> blocks_;  // by block sequence number
   uint64_t block_seq_ = 0;                           // on_block calls so far
+  const TraceBlock* current_ = nullptr;              // the entry of block current_seq_
+  uint64_t current_seq_ = 0;
   size_t prune_at_;
 };
 

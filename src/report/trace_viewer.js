@@ -173,7 +173,7 @@
   tool.rotation.x = -Math.PI / 2;  // the cone's apex is +Y in its own frame; turn it to -Z
   scene.add(tool);
 
-  // Views: the whole trace fits the window.
+  // Views from three directions about the centre of the framed box.
   // The framed box's bounding sphere fits the 40 degree vertical field of view.
   var radius = Math.max(0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]), 1e-3);
   var fitDistance = 1.05 * radius / Math.sin(20 * Math.PI / 180);
