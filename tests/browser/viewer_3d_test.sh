@@ -5,7 +5,7 @@
 # project are painted and pixels away from the path are not, moves the playback bar from the
 # first to the last sample and checks that the shown block changes, and steps back a block with
 # shift + left arrow. The verdict lands in the DOM, which --dump-dom prints; this script checks
-# it and which blocks were shown.
+# it and which blocks were shown. Then, with WebGL disabled, that the page says so.
 # Needs Chromium and Debian's libjs-three (scripts/setup-debian.sh --with-browser installs both).
 # Fails when either is missing; skips (exit 77) only when DRYCUT_NO_BROWSER=1 is set.
 # Usage: viewer_3d_test.sh PATH/TO/drycut
@@ -77,6 +77,14 @@ fail=0
 [[ "$verdict" == *"shift+left shows [VIEW3D.MPF:8 N80 X10 Y0 Z-1]"* ]] || { echo "FAILED: shift+left arrow did not go back to N80"; fail=1; }
 if grep -q '<tag>' "$work/dom.html"; then
   echo "FAILED: block text became markup"
+  fail=1
+fi
+# A browser without WebGL gets a note instead of the view (and the rest of the page).
+timeout 120 "$browser" "${flags[@]}" --disable-webgl --disable-3d-apis --user-data-dir="$work/profile-nogl" \
+  --dump-dom "file://$work/report.html" > "$work/dom-nogl.html" 2>/dev/null || true
+if ! grep -q 'id="trace-status" class="note">WebGL is not available' "$work/dom-nogl.html" ||
+   ! grep -q '<svg id="top-view"' "$work/dom-nogl.html"; then
+  echo "FAILED: without WebGL the page does not say so or lost its top view"
   fail=1
 fi
 exit $fail
