@@ -12,8 +12,9 @@
 // the pixels back (preserveDrawingBuffer) and checks that pixels at projected path samples are
 // painted while pixels away from the path are background, then moves the playback bar from the
 // first to the last sample and checks that the shown block changes (and that shift + left arrow
-// goes back a block); the verdict is written into
-// the pre element with id trace-selftest, which `chromium --dump-dom` prints.
+// goes back a block); the verdict is written into the pre element with id trace-selftest, which
+// `chromium --dump-dom` prints. Then it plays from the start at the highest speed and writes
+// where the playback got to into the pre element trace-selftest-playback.
 (function () {
   'use strict';
   var root = document.getElementById('trace-viewer');
@@ -372,5 +373,18 @@
         '/' + control + '; painted pixels ' + paintedPixels + '; block at start [' + first + ']; block at end [' + last +
         ']; tool moved ' + moved + '; shift+left shows [' + back + ']; VERDICT ' + (ok ? 'PASS' : 'FAIL');
     root.appendChild(out);
+    // Playback: from the start at the highest speed; where it got to is written beside the
+    // verdict on every frame (the browser test gives the page virtual time to play).
+    var played = document.createElement('pre');
+    played.id = 'trace-selftest-playback';
+    root.appendChild(played);
+    show(0);
+    speedSelect.value = speedSelect.options[speedSelect.options.length - 1].value;
+    setPlaying(true);
+    (function watch() {
+      played.textContent = 'playback at sample ' + current + ' of ' + (n - 1) + ', playing ' + playing +
+          ', block [' + $('trace-where').textContent + ' ' + $('trace-block').textContent + ']';
+      if (playing) requestAnimationFrame(watch);
+    })();
   }
 })();

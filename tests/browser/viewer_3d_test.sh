@@ -4,7 +4,7 @@
 # #selftest): it reads the drawn canvas back and checks that the pixels where path samples
 # project are painted and pixels away from the path are not, moves the playback bar from the
 # first to the last sample and checks that the shown block changes, and steps back a block with
-# shift + left arrow. The verdict lands in the DOM, which --dump-dom prints; this script checks
+# shift + left arrow, then plays the program to its end. The verdict lands in the DOM, which --dump-dom prints; this script checks
 # it and which blocks were shown. Then, with WebGL disabled, that the page says so.
 # Needs Chromium and Debian's libjs-three (scripts/setup-debian.sh --with-browser installs both).
 # Fails when either is missing; skips (exit 77) only when DRYCUT_NO_BROWSER=1 is set.
@@ -58,7 +58,7 @@ fi
 flags=(--headless --no-sandbox --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader
        --disable-quic --no-first-run --disable-background-networking --disable-component-update
        --disable-sync --hide-scrollbars --window-size=1200,1600)
-timeout 120 "$browser" "${flags[@]}" --user-data-dir="$work/profile" --dump-dom \
+timeout 120 "$browser" "${flags[@]}" --user-data-dir="$work/profile" --virtual-time-budget=10000 --dump-dom \
   "file://$work/report.html#selftest" > "$work/dom.html" 2>/dev/null || true
 
 verdict="$(grep -o '<pre id="trace-selftest">[^<]*' "$work/dom.html" | sed 's/<pre id="trace-selftest">//' || true)"
@@ -75,6 +75,14 @@ fail=0
 [[ "$verdict" == *"block at start [VIEW3D.MPF:1 N10 G0 X10 Y0 Z5]"* ]] || { echo "FAILED: wrong first block"; fail=1; }
 [[ "$verdict" == *"block at end [VIEW3D.MPF:9 N90 G0 Z20]"* ]] || { echo "FAILED: wrong last block"; fail=1; }
 [[ "$verdict" == *"shift+left shows [VIEW3D.MPF:8 N80 X10 Y0 Z-1]"* ]] || { echo "FAILED: shift+left arrow did not go back to N80"; fail=1; }
+# After the checks the page plays the program from the start at the highest speed.
+playback="$(grep -o '<pre id="trace-selftest-playback">[^<]*' "$work/dom.html" | sed 's/<pre id="trace-selftest-playback">//' || true)"
+echo "playback: ${playback:-none}"
+if [[ ! "$playback" =~ ^"playback at sample "([0-9]+)" of "([0-9]+)", playing false, block [VIEW3D.MPF:9 N90 G0 Z20]"$ ]] ||
+   [[ "${BASH_REMATCH[1]}" != "${BASH_REMATCH[2]}" ]]; then
+  echo "FAILED: playing did not run the trace to its end"
+  fail=1
+fi
 if grep -q '<tag>' "$work/dom.html"; then
   echo "FAILED: block text became markup"
   fail=1
