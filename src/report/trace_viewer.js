@@ -63,7 +63,7 @@
     return;
   }
   var W = canvas.width, H = canvas.height;
-  renderer.setPixelRatio(1);
+  renderer.setPixelRatio(window.devicePixelRatio || 1);  // sharp on high-density screens
   renderer.setSize(W, H);
   renderer.setClearColor(0xffffff, 1);
   var scene = new THREE.Scene();
@@ -168,9 +168,9 @@
   });
 
   // The tool: a cone whose tip is the tool centre, pointing down the Z axis.
-  var toolHeight = size * 0.07;
+  var toolHeight = size * 0.1;
   var tool = new THREE.Mesh(new THREE.ConeBufferGeometry(toolHeight * 0.3, toolHeight, 20),
-                            new THREE.MeshBasicMaterial({ color: 0x202020, transparent: true, opacity: 0.75 }));
+                            new THREE.MeshBasicMaterial({ color: 0x202020, transparent: true, opacity: 0.85 }));
   tool.rotation.x = -Math.PI / 2;  // the cone's apex is +Y in its own frame; turn it to -Z
   scene.add(tool);
 
@@ -268,6 +268,8 @@
     return s > 0 ? blockStart(s - 1) : 0;
   }
   root.addEventListener('keydown', function (e) {
+    // The speed list keeps its own keys; a focused button takes space as its own click.
+    if (e.target.tagName === 'SELECT' || (e.key === ' ' && e.target.tagName === 'BUTTON')) return;
     var handled = true;
     if (e.key === ' ') setPlaying(!playing);
     else if (e.key === 'ArrowRight') show(e.shiftKey ? stepBlock(1) : current + 1);
