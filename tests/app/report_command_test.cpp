@@ -59,6 +59,7 @@ TEST(ReportCommand, EscapesBlockTextAndIsSelfContained) {
   // stderr is a file here: the alarm, but no progress line (no carriage return).
   const std::string log = read_file(err);
   EXPECT_NE(log.find("12550"), std::string::npos) << log;
+  EXPECT_NE(log.find("no 3D view in the page"), std::string::npos) << log;
   EXPECT_EQ(log.find('\r'), std::string::npos);
 }
 
