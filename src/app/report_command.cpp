@@ -14,6 +14,7 @@
 #include "parser/program_files.hpp"
 #include "report/html_element_tap.hpp"
 #include "report/html_run_report.hpp"
+#include "report/viewer_library.hpp"
 
 namespace drycut::app {
 
@@ -117,6 +118,10 @@ void register_report(CLI::App& app) {
       input.plots = std::move(run.plots);
       input.dip_locations = run.dip_locations;
       input.annotated_dips = o->annotated_dips;
+      input.viewer = std::make_shared<const report::ViewerLibrary>(report::load_viewer_library());
+      // Not an error: the page says the same under "3D view" and keeps every other figure.
+      if (!input.viewer->available())
+        std::fprintf(stderr, "drycut report: no 3D view in the page: %s\n", input.viewer->missing.c_str());
       if (reference) {
         input.reference = reference->outline;
         input.reference_name = reference->name;

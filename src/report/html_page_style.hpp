@@ -30,6 +30,18 @@ svg.chart .callout circle { fill: none; stroke: #000; stroke-width: 2; }
 svg.chart .callout text { font-weight: bold; fill: #000; paint-order: stroke; stroke: #fff; stroke-width: 3px; }
 svg.chart circle.callout-swatch { fill: none; stroke: #000; stroke-width: 2; }
 p.note { color: #555; font-size: 12px; margin: 2px 0 10px 0; }
+div.viewer { border: 1px solid #ccc; padding: 6px; outline: none; }
+div.viewer:focus { border-color: #2166ac; }
+div.viewer-stage { position: relative; width: 1100px; height: 640px; overflow: hidden; }
+div.viewer-stage canvas { display: block; cursor: grab; }
+#trace-labels span { position: absolute; transform: translate(-50%, -130%); font: bold 12px sans-serif; color: #000; paint-order: stroke; -webkit-text-stroke: 3px #fff; pointer-events: none; }
+#trace-labels span.tool { display: none; }
+div.viewer-bar { display: flex; gap: 6px; align-items: center; margin: 6px 0; }
+div.viewer-bar input[type=range] { flex: 1; }
+#trace-readout { width: 100%; margin-top: 4px; }
+#trace-readout th { width: 70px; }
+#trace-legend { font-size: 12px; color: #333; margin-top: 6px; }
+#trace-legend .ramp { display: inline-block; width: 240px; height: 10px; vertical-align: middle; margin: 0 6px; border: 1px solid #999; }
 )css";
 
 }  // namespace drycut::report

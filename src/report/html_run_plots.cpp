@@ -15,7 +15,8 @@ RunPlotCollector::RunPlotCollector(RunPlotOptions options)
       tool_path_(options_.buckets),
       programmed_(options_.buckets),
       knots_(options_.buckets),
-      feed_(options_.buckets) {}
+      feed_(options_.buckets),
+      trace_(options_.trace_buckets) {}
 
 void RunPlotCollector::on_programmed(const interp::PathElement& e) {
   if (!e.is_motion() || !e.curve) return;
@@ -47,6 +48,7 @@ void RunPlotCollector::on_programmed(const interp::PathElement& e) {
 }
 
 void RunPlotCollector::on_tool_centre(const interp::PathElement& e) {
+  trace_.on_tool_centre(e);
   Pending p;
   p.feed = e.feed_mm_s;
   p.cutting = e.is_motion() && !e.rapid && e.curve && e.curve->length() > 1e-9;
@@ -68,6 +70,7 @@ void RunPlotCollector::close_feed_run() {
 }
 
 void RunPlotCollector::on_block(const motion::BlockTiming& timing) {
+  trace_.on_block(timing);
   // The planner times elements in the order it consumed them; skip any it never timed.
   while (!pending_.empty() && (pending_.front().line != timing.source.line || pending_.front().label != timing.label))
     pending_.pop_front();
@@ -131,6 +134,7 @@ void RunPlotCollector::note_candidate(const motion::BlockTiming& timing, const P
 }
 
 void RunPlotCollector::on_sample(const motion::TrajectorySample& sample) {
+  trace_.on_sample(sample);
   const double x = sample.position.x(), y = sample.position.y(), z = sample.position.z();
   if (have_sample_) sample_s_ += std::sqrt((x - last_x_) * (x - last_x_) + (y - last_y_) * (y - last_y_) + (z - last_z_) * (z - last_z_));
   have_sample_ = true;
@@ -163,6 +167,7 @@ RunPlots RunPlotCollector::plots() const {
   p.max_deviation_mm = max_deviation_;
   p.programmed_length_mm = programmed_s_;
   p.samples = samples_;
+  p.trace = trace_.trace();
   return p;
 }
 

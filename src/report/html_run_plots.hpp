@@ -15,6 +15,7 @@
 #include "interp/path_element.hpp"
 #include "motion/plan_result.hpp"
 #include "report/svg_decimator.hpp"
+#include "report/trace_3d_collector.hpp"
 
 namespace drycut::report {
 
@@ -35,6 +36,7 @@ struct RunPlots {
   double max_deviation_mm = 0;
   double programmed_length_mm = 0;
   uint64_t samples = 0;
+  Trace3d trace;                           // the 3D viewer's trace (x, y, z, t, v, block)
 };
 
 struct RunPlotOptions {
@@ -45,6 +47,7 @@ struct RunPlotOptions {
   // contour, and get no deviation.
   double on_contour_mm = 1.0;
   double programmed_step_mm = 0.05;  // sampling of the programmed path for the deviation
+  size_t trace_buckets = 4000;       // 3D trace: at most 2 × trace_buckets + 2 points
 };
 
 class RunPlotCollector : public motion::PlanObserver {
@@ -78,6 +81,7 @@ class RunPlotCollector : public motion::PlanObserver {
 
   RunPlotOptions options_;
   PointDecimator tool_path_, programmed_, knots_, feed_;
+  Trace3dCollector trace_;
   std::deque<Pending> pending_;
   double clock_s_ = 0, length_mm_ = 0;  // committed totals
   // Current run of one programmed F.

@@ -9,6 +9,7 @@
 
 #include "report/html_escape.hpp"
 #include "report/html_page_style.hpp"
+#include "report/html_trace_viewer.hpp"
 #include "report/run_completion.hpp"
 #include "report/svg_chart.hpp"
 
@@ -155,6 +156,19 @@ std::string deviation_chart(const RunReportInput& in) {
   return chart.render();
 }
 
+std::string trace_view(const RunReportInput& in, const std::vector<size_t>& worst) {
+  TraceViewerInput v;
+  v.trace = &in.plots.trace;
+  v.library = in.viewer.get();
+  v.scale_mm_s = cutting_scale(in);
+  for (size_t r = 0; r < worst.size() && r < in.annotated_dips; ++r) {
+    const size_t i = worst[r];
+    if (i < in.dip_locations.size() && in.dip_locations[i].known)
+      v.dips.push_back({in.dip_locations[i].t, r + 1, dip_tooltip(r + 1, in.summary.dips[i])});
+  }
+  return trace_viewer_section(v);
+}
+
 std::string dip_table(const RunReportInput& in, const std::vector<size_t>& worst) {
   const auto& s = in.summary;
   const size_t total = s.dips.size() + s.dips_not_listed;
@@ -207,6 +221,7 @@ std::string render_run_report(const RunReportInput& in) {
          ".</p>\n";
   o += "<h2>Summary</h2>\n" + summary_table(in);
   o += "<h2>Alarms and warnings</h2>\n" + diagnostics_table(in);
+  o += trace_view(in, worst);
   o += "<h2>Top view</h2>\n" + top_view(in, worst);
   o += "<p class=\"note\">Equal scale in X and Y; with a reference contour the view frames the contour and clips moves far from it. "
        "Colour: path velocity of the tool centre; faster than the highest cutting F (rapids) shows the top colour. Numbered rings: the worst feed dips (hover for details), listed in the table below.</p>\n";

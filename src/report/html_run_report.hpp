@@ -2,7 +2,9 @@
 // The self-contained HTML report of one run: summary, alarms and warnings, top view (tool-centre
 // path coloured by velocity, programmed path, knots, dips), velocity over time and over arc
 // length with the programmed F, deviation from the reference contour, and the dip table.
-// Plots are inline SVG with ids top-view, velocity-time, velocity-length, deviation.
+// Plots are inline SVG with ids top-view, velocity-time, velocity-length, deviation; the 3D view
+// (html_trace_viewer.hpp) is a WebGL canvas with id trace-canvas.
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +12,7 @@
 #include "machine/alarm.hpp"
 #include "motion/plan_result.hpp"
 #include "report/html_run_plots.hpp"
+#include "report/viewer_library.hpp"
 
 namespace drycut::report {
 
@@ -26,6 +29,8 @@ struct RunReportInput {
   std::string reference_name;
   size_t annotated_dips = 10;  // dips marked on the plots; all listed ones are in the table
   size_t dip_table_rows = 200;
+  // three.js for the 3D view; null or unavailable: the page says why and keeps the top view.
+  std::shared_ptr<const ViewerLibrary> viewer;
 };
 
 std::string render_run_report(const RunReportInput& input);

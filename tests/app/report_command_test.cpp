@@ -1,12 +1,41 @@
 // `drycut report`: a self-contained HTML page; block text shown literally; deviation against a
-// reference; exit codes; no progress output when stderr is not a terminal.
+// reference; the 3D view with three.js inlined, or a note when three.js is missing; exit codes;
+// no progress output when stderr is not a terminal.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "report/viewer_library.hpp"
 #include "report_cli_support.hpp"
 
 namespace {
 
 using namespace drycut::report_cli;
+
+// Where drycut reads three.js, for the child processes of one test (DRYCUT_THREE_JS_DIR).
+struct ThreeJsDir {
+  explicit ThreeJsDir(const fs::path& dir) { ::setenv("DRYCUT_THREE_JS_DIR", dir.c_str(), 1); }
+  ~ThreeJsDir() { ::unsetenv("DRYCUT_THREE_JS_DIR"); }
+};
+
+// A stand-in for Debian's libjs-three: every file the viewer inlines, each one line of script.
+fs::path fake_three_js(const fs::path& dir) {
+  for (const char* f : drycut::report::kViewerLibraryFiles) {
+    fs::create_directories((dir / f).parent_path());
+    write_file(dir / f, std::string("/* fake ") + f + " */ var fake_lib;\n");
+  }
+  return dir;
+}
+
+// The JSON in <script type="application/json" id="trace-data">.
+nlohmann::json trace_data(const std::string& page) {
+  const std::string open = "<script type=\"application/json\" id=\"trace-data\">";
+  const size_t a = page.find(open);
+  if (a == std::string::npos) return nullptr;
+  const size_t b = page.find("</script>", a);
+  return nlohmann::json::parse(page.substr(a + open.size(), b - a - open.size()));
+}
 
 TEST(ReportCommand, EscapesBlockTextAndIsSelfContained) {
   TempDir dir("drycut_report_cli_escape");
@@ -15,11 +44,13 @@ TEST(ReportCommand, EscapesBlockTextAndIsSelfContained) {
              "N40 G1 QQ=5 ; <script>alert(\"x\")</script> & co\nN50 M30\n");
   const fs::path html = dir.path / "out.html";
   const fs::path err = dir.path / "stderr.txt";
+  const ThreeJsDir no_three(dir.path / "no-three-js-here");  // without three.js: no script at all
   const CliRun r = run_drycut("report " + quoted(dir.path / "EVIL.MPF") + " -o " + quoted(html), err.string());
   EXPECT_EQ(r.exit_code, 1);  // the program raised an alarm; the report is still written
   const std::string page = read_file(html);
   ASSERT_FALSE(page.empty());
   EXPECT_EQ(page.find("<script"), std::string::npos);
+  EXPECT_NE(page.find("id=\"trace-viewer-missing\""), std::string::npos);  // the note says why
   EXPECT_NE(page.find("N40 G1 QQ=5 ; &lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt; &amp; co"), std::string::npos);
   EXPECT_EQ(page.find("http://"), std::string::npos);
   EXPECT_EQ(page.find("https://"), std::string::npos);
@@ -28,6 +59,7 @@ TEST(ReportCommand, EscapesBlockTextAndIsSelfContained) {
   // stderr is a file here: the alarm, but no progress line (no carriage return).
   const std::string log = read_file(err);
   EXPECT_NE(log.find("12550"), std::string::npos) << log;
+  EXPECT_NE(log.find("no 3D view in the page"), std::string::npos) << log;
   EXPECT_EQ(log.find('\r'), std::string::npos);
 }
 
@@ -57,10 +89,56 @@ TEST(ReportCommand, FileStaysSmallForLongPrograms) {
   text += "M30\n";
   write_file(dir.path / "LONG.MPF", text);
   const fs::path html = dir.path / "long.html";
+  const ThreeJsDir three(fake_three_js(dir.path / "three"));  // the page without three.js's 850 kB
   EXPECT_EQ(run_drycut("report " + quoted(dir.path / "LONG.MPF") + " -o " + quoted(html)).exit_code, 0);
   const auto size = fs::file_size(html);
   EXPECT_GT(size, 10'000u);
-  EXPECT_LT(size, 1'500'000u);
+  EXPECT_LT(size, 1'000'000u);
+  // The 3D trace is decimated as the plots are: at most 2 × 4000 + 2 points of 7 numbers.
+  const auto data = trace_data(read_file(html));
+  ASSERT_TRUE(data.is_object());
+  EXPECT_LE(data["p"].size(), 7u * 8002u);
+  EXPECT_GT(data["samples"].get<uint64_t>(), 8002u);  // so there was something to decimate
+}
+
+TEST(ReportCommand, ThreeDViewInlinesThreeJsAndTheTrace) {
+  TempDir dir("drycut_report_cli_3d");
+  // A rapid down to Z5, a 10 x 10 square at F600 with a block text that must stay text.
+  write_file(dir.path / "SQ.MPF",
+             "N10 G0 X0 Y0 Z5\nN20 G1 X10 F600\nN30 Y10 ; </script><b>\nN40 X0\nN50 Y0\nN60 M30\n");
+  const fs::path html = dir.path / "sq.html";
+  const ThreeJsDir three(fake_three_js(dir.path / "three"));
+  ASSERT_EQ(run_drycut("report " + quoted(dir.path / "SQ.MPF") + " -o " + quoted(html)).exit_code, 0);
+  const std::string page = read_file(html);
+  EXPECT_NE(page.find("<canvas id=\"trace-canvas\""), std::string::npos);
+  for (const char* f : drycut::report::kViewerLibraryFiles)
+    EXPECT_NE(page.find(std::string("/* fake ") + f + " */"), std::string::npos) << f;
+  EXPECT_EQ(page.find("<b>"), std::string::npos);
+  const auto data = trace_data(page);
+  ASSERT_TRUE(data.is_object());
+  const auto& p = data["p"];
+  ASSERT_EQ(p.size() % 7, 0u);
+  ASSERT_GE(p.size(), 14u);
+  // The trace ends where N50 ends (X0 Y0 Z5; the last IPO sample may fall up to one cycle short
+  // of the stop, well under 0.05 mm while braking); time rises; the rapid is flagged 1 and first.
+  const size_t last = p.size() - 7;
+  EXPECT_NEAR(p[last].get<double>(), 0.0, 0.05);
+  EXPECT_NEAR(p[last + 1].get<double>(), 0.0, 0.05);
+  EXPECT_NEAR(p[last + 2].get<double>(), 5.0, 1e-3);
+  EXPECT_EQ(p[6], 1);
+  EXPECT_EQ(p[last + 6], 0);
+  for (size_t i = 7; i < p.size(); i += 7) EXPECT_GE(p[i + 3].get<double>(), p[i - 4].get<double>());
+  // Every block of the square is named with its file, line and text; F600 for the cuts.
+  bool saw_n30 = false;
+  for (const auto& b : data["blocks"]) {
+    EXPECT_EQ(data["files"][b[0].get<size_t>()], "SQ.MPF");
+    if (b[1] == 3) {
+      saw_n30 = true;
+      EXPECT_EQ(b[2], "N30 Y10 ; </script><b>");
+      EXPECT_EQ(b[3], 600);
+    }
+  }
+  EXPECT_TRUE(saw_n30);
 }
 
 TEST(ReportCommand, UsageErrorsExitTwo) {

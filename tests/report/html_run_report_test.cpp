@@ -67,6 +67,7 @@ TEST(HtmlRunReport, HasThePlotsTablesAndSummaryFigures) {
                          "id=\"alarms\"", "id=\"dips\""})
     EXPECT_NE(html.find(id), std::string::npos) << id;
   EXPECT_EQ(html.find("id=\"deviation\""), std::string::npos);  // no reference given
+  EXPECT_NE(html.find("id=\"trace-viewer-missing\""), std::string::npos);  // no three.js given
   EXPECT_NE(html.find("12.35 s"), std::string::npos);
   EXPECT_NE(html.find("2.50 s"), std::string::npos);
   EXPECT_NE(html.find("300 mm/min"), std::string::npos);   // lowest feed 5 mm/s
