@@ -1,5 +1,6 @@
 #include "interp/frame_components.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <vector>
 
@@ -25,6 +26,7 @@ std::vector<std::string_view> split_arguments(std::string_view s) {
 }  // namespace
 
 Frame FrameComponents::frame() const {
+  if (composed_) return *composed_;
   return Frame::translation(translation + fine)
       .then(Frame::rotation_rpy(rotation_deg))
       .then(Frame::scale(scale))
@@ -32,7 +34,7 @@ Frame FrameComponents::frame() const {
 }
 
 bool FrameComponents::set(int axis, std::string_view component, double value) {
-  if (axis < 0 || axis > 2) return false;
+  if (axis < 0 || axis > 2 || composed_) return false;
   if (component == "TR") translation[axis] = value;
   else if (component == "FI") fine[axis] = value;
   else if (component == "RT") rotation_deg[axis] = value;
@@ -43,12 +45,46 @@ bool FrameComponents::set(int axis, std::string_view component, double value) {
 }
 
 std::string FrameComponents::assign(std::string_view d, double unit) {
+  // A chain "F1(..):F2(..)" is the product F1·F2. Functions in the components' own order
+  // (translations, then CROT, CSCALE, CMIRROR) merge into components; any other order is kept
+  // as the product (and then cannot be written by component).
+  FrameComponents merged;
+  Frame product;
+  int last_rank = -1;
+  bool in_order = true;
+  size_t start = 0;
+  for (size_t i = 0; i <= d.size(); ++i) {
+    if (i < d.size() && d[i] != ':') continue;
+    FrameComponents one;
+    int rank = 0;
+    const std::string error = one.assign_function(d.substr(start, i - start), unit, rank);
+    if (!error.empty()) return error;
+    product = product.then(one.frame());
+    in_order = in_order && (rank > last_rank || (rank == 0 && last_rank == 0));
+    if (in_order) {
+      merged.translation += one.translation;
+      merged.fine += one.fine;
+      if (rank == 1) merged.rotation_deg = one.rotation_deg;
+      if (rank == 2) merged.scale = one.scale;
+      if (rank == 3) merged.mirror = one.mirror;
+    }
+    last_rank = std::max(last_rank, rank);
+    start = i + 1;
+  }
+  if (!product.invertible()) return "a scale factor 0 leaves no inverse";
+  *this = merged;
+  if (!in_order) composed_ = product;
+  return {};
+}
+
+std::string FrameComponents::assign_function(std::string_view d, double unit, int& rank) {
   const size_t open = d.find('(');
-  if (open == std::string_view::npos || d.back() != ')') return "a frame expression drycut cannot read";
+  if (open == std::string_view::npos || d.empty() || d.back() != ')') return "a frame expression drycut cannot read";
   const std::string_view name = d.substr(0, open);
+  rank = name == "CTRANS" || name == "CFINE" ? 0 : name == "CROT" ? 1 : name == "CSCALE" ? 2 : name == "CMIRROR" ? 3 : -1;
+  if (rank < 0) return std::string(name) + " is not a frame function";
   const auto args = split_arguments(d.substr(open + 1, d.size() - open - 2));
-  *this = FrameComponents{};
-  const bool pairs = name != "CMIRROR";
+  const bool pairs = rank != 3;
   for (size_t i = 0; i < args.size() && !args[i].empty(); i += pairs ? 2 : 1) {
     const int axis = axis_number(args[i]);
     if (axis < 0) return std::string(name) + ": " + std::string(args[i]) + " is not a geometry axis X, Y or Z";
@@ -59,12 +95,10 @@ std::string FrameComponents::assign(std::string_view d, double unit) {
     }
     if (name == "CTRANS") translation[axis] = value * unit;
     else if (name == "CFINE") fine[axis] = value * unit;
-    else if (name == "CROT") rotation_deg[axis] = value;
-    else if (name == "CSCALE") scale[axis] = value;
-    else if (name == "CMIRROR") mirror[static_cast<size_t>(axis)] = true;
-    else return std::string(name) + " is not a frame function";
+    else if (rank == 1) rotation_deg[axis] = value;
+    else if (rank == 2) scale[axis] = value;
+    else mirror[static_cast<size_t>(axis)] = true;
   }
-  if (!frame().invertible()) return std::string(name) + ": a scale factor 0 leaves no inverse";
   return {};
 }
 

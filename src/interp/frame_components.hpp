@@ -7,9 +7,10 @@
 // The frame they make: the translation (coarse + fine) outermost, then the rotation (RPY about
 // X, Y, Z like ROT), the scale, the mirror innermost — the order of the settable frames in the
 // profile (frame_chain.cpp) and of TRANS/ROT/SCALE/MIRROR in one frame.
-// A whole-frame value arrives from the loader as text "CTRANS(X,10,Y,5)" (parser FRAME values);
-// the `:` chaining of frame functions is not read (such a value is refused: a warning).
+// A whole-frame value arrives from the loader as text "CTRANS(X,10,Y,5):CROT(Z,30)" (parser
+// FRAME values; `:` chains them, the product of the frames).
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -31,9 +32,15 @@ struct FrameComponents {
   // Sets component "TR", "FI", "RT", "SC" or "MI" of axis 0..2 (lengths already in mm); false
   // for an unknown component.
   bool set(int axis, std::string_view component, double value);
-  // A whole frame from a frame function's text ("CTRANS(X,10,Y,5)"); `unit` converts lengths to
-  // mm. Returns an error text, empty on success.
+  // A whole frame from frame functions' text ("CTRANS(X,10,Y,5):CROT(Z,30)"); `unit` converts
+  // lengths to mm. Returns an error text, empty on success.
   std::string assign(std::string_view description, double unit);
+
+ private:
+  // One function "CROT(Z,30)"; rank: 0 translation, 1 rotation, 2 scale, 3 mirror.
+  std::string assign_function(std::string_view function, double unit, int& rank);
+  // A chain whose order the components cannot hold (CROT(..):CTRANS(..)): the product itself.
+  std::optional<Frame> composed_;
 };
 
 // The components of settable frame `index` in the machine profile (translation and rotation).

@@ -21,6 +21,7 @@ enum class ExprOp : uint8_t {
   And, Or, Xor,                                                     // a, b
   BitAnd, BitOr, BitXor, BitNot,    // B_AND B_OR B_XOR (a, b), B_NOT (a)
   Concat,                           // a << b: strings (numbers converted)
+  FrameChain,                       // a : b: FRAME values chained (CTRANS(..) : CROT(..))
   Call,         // function `func`, arguments args[a .. a+b)
 };
 

@@ -44,6 +44,15 @@ class Evaluator {
       case ExprOp::Name: return name(n);
       case ExprOp::Call: return call(n);
       case ExprOp::Concat: return Value::of_text(as_text(eval(n.a)) + as_text(eval(n.b)));
+      case ExprOp::FrameChain: {
+        Value a = eval(n.a);
+        const Value b = eval(n.b);
+        if (a.kind != ValueKind::Frame || b.kind != ValueKind::Frame)
+          throw LineError(12150, n.column, "':' chains FRAME values only");
+        a.text += ':';
+        a.text += b.text;
+        return a;
+      }
       case ExprOp::Equal:
       case ExprOp::NotEqual:
       case ExprOp::Less:

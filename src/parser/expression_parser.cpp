@@ -32,7 +32,18 @@ bool is_expression_keyword(std::string_view name) {
   return false;
 }
 
-ExprIndex ExpressionParser::parse() { return comparison(); }
+ExprIndex ExpressionParser::parse() { return frame_chain(); }
+
+// `:` chains FRAME values (PGA Job Planning "Frames": CTRANS(X,10) : CROT(Z,30)); lowest priority.
+ExprIndex ExpressionParser::frame_chain() {
+  ExprIndex left = comparison();
+  while (peek().kind == TokenKind::Colon) {
+    const uint32_t column = peek().column;
+    ++pos_;
+    left = pool_.add(ExprNode{ExprOp::FrameChain, Function::Sin, column, left, comparison(), 0.0, {}});
+  }
+  return left;
+}
 
 ExprIndex ExpressionParser::comparison() {
   ExprIndex left = concatenation();

@@ -27,6 +27,7 @@ class ExpressionParser {
   size_t list(TokenKind close, std::span<ExprIndex> out, bool empty_items, const char* too_many);
 
  private:
+  ExprIndex frame_chain();
   ExprIndex comparison();
   ExprIndex concatenation();
   ExprIndex logical_or();

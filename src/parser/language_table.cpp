@@ -97,7 +97,7 @@ std::vector<LanguageFeature> language_features() {
   for (const FunctionInfo& f : all_functions()) {
     const bool frame = f.func == Function::FrameFunction;
     add(out, "Functions", std::string(f.name), Support::Modelled,
-        std::string(f.meaning) + (frame ? " (computed where $P_UIFR/$P_PFRAME is written; `:` chains are not)" : ""));
+        std::string(f.meaning) + (frame ? " (computed where $P_UIFR/$P_PFRAME is written; `:` chains them)" : ""));
   }
   for (const CommandInfo& c : all_commands()) add(out, "Commands", std::string(c.name), c.support, "");
   add(out, "Commands", "CYCLEnnn, POCKETn, SLOTn, HOLESn ...", Support::Modelled,

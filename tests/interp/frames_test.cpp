@@ -5,7 +5,7 @@
 
 #include "interp/cutter_compensation.hpp"
 #include "interp/frame_chain.hpp"
-#include "interp/frame_functions.hpp"
+#include "interp/frame_components.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp_test_support.hpp"
 
@@ -312,24 +312,28 @@ namespace drycut::interp::testing {
 namespace {
 
 TEST(FrameFunctions, BuildTheSameComponentsAsTheInstructions) {
-  using Args = std::vector<parser::Argument>;
+  FrameComponents c;
   // CTRANS(X, 10, Y, 5) : CROT(Z, 90): (10, 0) -> (0, 10) -> (10, 15), as TRANS X10 Y5 / AROT RPL=90.
-  auto t = frame_function("CTRANS", Args{std::string("X"), 10.0, std::string("Y"), 5.0});
-  auto r = frame_function("CROT", Args{std::string("Z"), 90.0});
-  ASSERT_TRUE(t.ok() && r.ok());
-  EXPECT_TRUE(near(t.frame.then(r.frame).to_outer({10, 0, 0}), Vector3d(10, 15, 0)));
+  ASSERT_EQ(c.assign("CTRANS(X,10,Y,5):CROT(Z,90)", 1.0), "");
+  EXPECT_TRUE(near(c.frame().to_outer({10, 0, 0}), Vector3d(10, 15, 0)));
+  EXPECT_TRUE(c.set(0, "TR", 20));  // in the components' order: still writable by component
+  EXPECT_TRUE(near(c.frame().to_outer({10, 0, 0}), Vector3d(20, 15, 0)));
+  // CROT(Z, 90) : CTRANS(X, 10): the shift acts in the rotated system: (5, 0) -> (15, 0) -> (0, 15).
+  ASSERT_EQ(c.assign("CROT(Z,90):CTRANS(X,10)", 1.0), "");
+  EXPECT_TRUE(near(c.frame().to_outer({5, 0, 0}), Vector3d(0, 15, 0)));
+  EXPECT_FALSE(c.set(0, "TR", 1));  // a product the components cannot hold
   // CSCALE(X, 2, Y, 3): (1, 1, 1) -> (2, 3, 1); CMIRROR(Y): (1, 1, 1) -> (1, -1, 1).
-  auto s = frame_function("CSCALE", Args{std::string("X"), 2.0, std::string("Y"), 3.0});
-  ASSERT_TRUE(s.ok());
-  EXPECT_TRUE(near(s.frame.to_outer({1, 1, 1}), Vector3d(2, 3, 1)));
-  auto m = frame_function("CMIRROR", Args{std::string("Y")});
-  ASSERT_TRUE(m.ok());
-  EXPECT_TRUE(near(m.frame.to_outer({1, 1, 1}), Vector3d(1, -1, 1)));
-  EXPECT_FALSE(frame_function("CTRANS", Args{std::string("X")}).ok());
-  EXPECT_FALSE(frame_function("CTRANS", Args{5.0, 1.0}).ok());
-  EXPECT_FALSE(frame_function("CSCALE", Args{std::string("X"), 0.0}).ok());
-  EXPECT_TRUE(is_frame_function("CROT"));
-  EXPECT_FALSE(is_frame_function("ROT"));
+  ASSERT_EQ(c.assign("CSCALE(X,2,Y,3)", 1.0), "");
+  EXPECT_TRUE(near(c.frame().to_outer({1, 1, 1}), Vector3d(2, 3, 1)));
+  ASSERT_EQ(c.assign("CMIRROR(Y)", 1.0), "");
+  EXPECT_TRUE(near(c.frame().to_outer({1, 1, 1}), Vector3d(1, -1, 1)));
+  // Inch: CTRANS lengths are converted, angles are not.
+  ASSERT_EQ(c.assign("CTRANS(X,1):CROT(Z,90)", 25.4), "");
+  EXPECT_TRUE(near(c.frame().to_outer({0, 0, 0}), Vector3d(25.4, 0, 0)));
+  EXPECT_NE(c.assign("CTRANS(X)", 1.0), "");
+  EXPECT_NE(c.assign("CTRANS(5,1)", 1.0), "");
+  EXPECT_NE(c.assign("CSCALE(X,0)", 1.0), "");
+  EXPECT_NE(c.assign("ROT(Z,30)", 1.0), "");
 }
 
 }  // namespace
