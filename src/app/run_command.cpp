@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
@@ -12,6 +13,7 @@
 #include "motion/planner.hpp"
 #include "report/html_element_tap.hpp"
 #include "report/run_completion.hpp"
+#include "report/run_events.hpp"
 #include "report/run_report_writer.hpp"
 #include "report/trace_csv_writer.hpp"
 
@@ -23,6 +25,7 @@ struct RunOptions {
   std::string json_file;
   std::string trace_file;
   size_t dips_shown = 10;
+  std::string span;  // FROM..TO, empty: none
 };
 
 using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
@@ -31,6 +34,18 @@ FilePtr open_output(const std::string& path) {
   FilePtr f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) throw UsageError("cannot write " + path);
   return f;
+}
+
+void print_span(const report::RunEventRecorder& events, const report::RunSpan& span) {
+  const auto s = events.span_s(span);
+  if (s) {
+    std::printf("  span %-20s %6.2f s\n", report::span_name(span).c_str(), *s);
+    return;
+  }
+  std::string missing;
+  for (auto e : {span.from, span.to})
+    if (!events.time_of(e)) missing = std::string(report::event_name(e));
+  std::printf("  span %-20s      - (the run has no %s)\n", report::span_name(span).c_str(), missing.c_str());
 }
 
 void print_summary(const RunOptions& o, const machine::MachineProfile& profile, const motion::PlanSummary& s,
@@ -67,8 +82,16 @@ void register_run(CLI::App& app) {
   cmd->add_option("--json", o->json_file, "Write the JSON report (summary, per-block rows, dips, alarms)");
   cmd->add_option("--trace", o->trace_file, "Write one CSV row per IPO cycle");
   cmd->add_option("--dips", o->dips_shown, "Dips listed in the summary")->default_val(10);
+  cmd->add_option("--span", o->span,
+                  "Time between two events FROM..TO (start, after_m0, after_dwell, contour_start, contour_end, end)");
   cmd->callback([o] {
     try {
+      std::optional<report::RunSpan> span;
+      try {
+        if (!o->span.empty()) span = report::parse_span(o->span);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+      }
       const machine::MachineProfile profile = load_machine(o->program);
       FilePtr json(nullptr, &std::fclose), trace(nullptr, &std::fclose);
       if (!o->json_file.empty()) json = open_output(o->json_file);
@@ -81,7 +104,9 @@ void register_run(CLI::App& app) {
       if (trace) tracer = std::make_unique<report::TraceCsvWriter>(trace.get());
       motion::PlanObserver& a = report ? static_cast<motion::PlanObserver&>(*report) : none;
       motion::PlanObserver& b = tracer ? static_cast<motion::PlanObserver&>(*tracer) : none;
-      report::PlanObserverPair observer(a, b);
+      report::PlanObserverPair outputs(a, b);
+      report::RunEventRecorder events(o->program.program);
+      report::PlanObserverPair observer(outputs, events);
 
       motion::PlannerOptions planner_options;
       planner_options.emit_samples = tracer != nullptr;
@@ -94,8 +119,9 @@ void register_run(CLI::App& app) {
       PipelineOutcome outcome = run_program_tool_centre(o->program, profile, end_tap);
       const motion::PlanSummary& summary = planner.summary();
       const report::RunCompletion completion = report::run_completion(outcome.diagnostics.items(), outcome.alarm);
-      if (report) report->finish(summary, outcome.diagnostics, completion, end_position);
+      if (report) report->finish(summary, outcome.diagnostics, completion, end_position, &events, span);
       print_summary(*o, profile, summary, completion);
+      if (span) print_span(events, *span);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut run: %s\n", e.what());

@@ -7,7 +7,9 @@
 //     "alarms": [...], "warnings": [...] }
 // The summary also says whether the run went to the end (`complete`, `stopped_at` {file, line,
 // alarm} or null) and where the last planned motion ended (`end_position_mm` {x, y, z}, machine
-// coordinates, or null without motion).
+// coordinates, or null without motion), and, given the run's events, `events` {start, after_m0,
+// after_dwell, contour_start, contour_end, end: seconds or null}, `span` ("FROM..TO" or null) and
+// `span_s` (report/run_events.hpp).
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -15,6 +17,7 @@
 #include "machine/alarm.hpp"
 #include "motion/plan_result.hpp"
 #include "report/run_completion.hpp"
+#include "report/run_events.hpp"
 
 namespace drycut::report {
 
@@ -25,7 +28,8 @@ class RunReportWriter : public motion::PlanObserver {
   void on_block(const motion::BlockTiming& timing) override;
   // Closes the document.
   void finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics, const RunCompletion& completion,
-              const std::optional<motion::Vec3>& end_position_mm);
+              const std::optional<motion::Vec3>& end_position_mm, const RunEventRecorder* events = nullptr,
+              const std::optional<RunSpan>& span = std::nullopt);
 
  private:
   std::FILE* out_;
