@@ -1,6 +1,6 @@
 // `drycut experiment`: the reference experiment in one command. Writes its 24 3-D finishing
-// programs, dry-runs each on the machine profile and sets the predicted time after M0 and lowest
-// feed beside the times and feeds measured on the real machine (programs/thesis/measured_equidistant.json,
+// programs, dry-runs each on the machine profile and sets the predicted time of one span
+// (kComparedSpan) and the lowest feed beside the times and feeds measured on the real machine (programs/thesis/measured_equidistant.json,
 // embedded). The polar programs' measurements are withheld: their predictions are printed alone.
 #include <nlohmann/json.hpp>
 #include <unistd.h>
