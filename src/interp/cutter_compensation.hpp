@@ -26,7 +26,8 @@
 //   fold is removed by cutting the raw path at the point where it crosses itself, which is where
 //   the control's intersection search finds it: between the offsets of one block, of adjacent
 //   blocks, or of blocks up to MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS apart (so an inside corner
-//   followed by blocks shorter than r tan(angle/2) is resolved several blocks on). Only a stretch
+//   followed by blocks shorter than r tan(angle/2) is resolved several blocks on; a fold under
+//   CDOF further, see below). Only a stretch
 //   that contains such a fold is cut: a crossing of sound offsets (a contour that crosses itself,
 //   a loop over the same path at another depth) stays. The approach and the retract move take
 //   part in the search (an entry spline that turns back sharply loops across its approach).
