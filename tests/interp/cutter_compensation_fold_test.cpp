@@ -146,5 +146,35 @@ TEST(CutterCompensationFold, CdofFoldThatNeverClosesIsABottleneck) {
   EXPECT_EQ(run.alarm->where.line, 3u);
 }
 
+TEST(CutterCompensationFold, CdofFoldOpenFor256BlocksIsACollisionWithoutWaitingForG40) {
+  // A U-turn of radius 0.5 into a channel of 0.01 mm blocks that runs on beside the incoming line
+  // (offsets y = 2 and y = -1, never crossing): the fold (the arc, block 3) holds the window until
+  // it is 256 blocks old, so the alarm comes with the 256th channel block (serial 3 + 256), not at
+  // the end of the 3000.
+  machine::MachineProfile profile = test::test_profile();
+  Diagnostics diagnostics;
+  test::CollectingSink sink;
+  CutterCompensation stage{sink, profile, diagnostics};
+  Comp comp{.side = CompensationSide::Left, .cdon = false};
+  std::vector<PathElement> elements{line({-20, -5, 0}, {-20, 0, 0}, comp, 1), line({-20, 0, 0}, {0, 0, 0}, comp, 2)};
+  elements.push_back(test::motion(std::make_shared<geometry::ArcCurve>(Vec3(0, 0.5, 0), 0.5, geometry::Plane::G17,
+                                                                       -std::numbers::pi / 2, std::numbers::pi, 0.0),
+                                  ElementKind::Arc, comp, 3));
+  for (int i = 0; i < 3000; ++i)
+    elements.push_back(line({-0.01 * i, 1, 0}, {-0.01 * (i + 1), 1, 0}, comp, static_cast<uint32_t>(4 + i)));
+  size_t consumed = 0;
+  try {
+    for (auto& e : elements) {
+      stage.consume(std::move(e));
+      ++consumed;
+    }
+    FAIL() << "no alarm";
+  } catch (const AlarmError& e) {
+    EXPECT_EQ(e.alarm().number, 10751);
+    EXPECT_EQ(e.alarm().where.line, 3u);
+    EXPECT_EQ(consumed, 3u + 255u);  // thrown while consuming the 256th channel block
+  }
+}
+
 }  // namespace
 }  // namespace drycut::interp
