@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
@@ -13,6 +14,7 @@
 #include "motion/planner.hpp"
 #include "report/html_element_tap.hpp"
 #include "report/run_completion.hpp"
+#include "report/run_events.hpp"
 #include "report/run_report_writer.hpp"
 #include "report/trace_csv_writer.hpp"
 
@@ -25,6 +27,7 @@ struct RunOptions {
   std::string ndjson_file;
   std::string trace_file;
   size_t dips_shown = 10;
+  std::string span;  // FROM..TO, empty: none
 };
 
 using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
@@ -36,6 +39,18 @@ FilePtr open_output(const std::string& path) {
   FilePtr f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) throw UsageError("cannot write " + path);
   return f;
+}
+
+void print_span(std::FILE* out, const report::RunEventRecorder& events, const report::RunSpan& span) {
+  const auto s = events.span_s(span);
+  if (s) {
+    std::fprintf(out, "  span %-20s %6.2f s\n", report::span_name(span).c_str(), *s);
+    return;
+  }
+  std::string missing;
+  for (auto e : {span.from, span.to})
+    if (!events.time_of(e)) missing = std::string(report::event_name(e));
+  std::fprintf(out, "  span %-20s      - (the run has no %s)\n", report::span_name(span).c_str(), missing.c_str());
 }
 
 void print_summary(std::FILE* out, const RunOptions& o, const machine::MachineProfile& profile,
@@ -75,8 +90,16 @@ void register_run(CLI::App& app) {
       ->excludes(json_option);
   cmd->add_option("--trace", o->trace_file, "Write one CSV row per IPO cycle");
   cmd->add_option("--dips", o->dips_shown, "Dips listed in the summary")->default_val(10);
+  cmd->add_option("--span", o->span,
+                  "Time between two events FROM..TO (start, after_m0, after_dwell, contour_start, contour_end, end)");
   cmd->callback([o] {
     try {
+      std::optional<report::RunSpan> span;
+      try {
+        if (!o->span.empty()) span = report::parse_span(o->span);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+      }
       const machine::MachineProfile profile = load_machine(o->program);
       FilePtr json(nullptr, &std::fclose), trace(nullptr, &std::fclose);
       const bool lines = !o->ndjson_file.empty();
@@ -94,7 +117,9 @@ void register_run(CLI::App& app) {
       if (trace) tracer = std::make_unique<report::TraceCsvWriter>(trace.get());
       motion::PlanObserver& a = report ? static_cast<motion::PlanObserver&>(*report) : none;
       motion::PlanObserver& b = tracer ? static_cast<motion::PlanObserver&>(*tracer) : none;
-      report::PlanObserverPair observer(a, b);
+      report::PlanObserverPair outputs(a, b);
+      report::RunEventRecorder events(o->program.program);
+      report::PlanObserverPair observer(outputs, events);
 
       motion::PlannerOptions planner_options;
       planner_options.emit_samples = tracer != nullptr;
@@ -107,9 +132,11 @@ void register_run(CLI::App& app) {
       PipelineOutcome outcome = run_program_tool_centre(o->program, profile, end_tap);
       const motion::PlanSummary& summary = planner.summary();
       const report::RunCompletion completion = report::run_completion(outcome.diagnostics.items(), outcome.alarm);
-      if (report) report->finish(summary, outcome.diagnostics, completion, end_position);
+      if (report) report->finish(summary, outcome.diagnostics, completion, end_position, &events, span);
       const bool stdout_taken = json_path == "-" || o->trace_file == "-";
-      print_summary(stdout_taken ? stderr : stdout, *o, profile, summary, completion);
+      std::FILE* text_out = stdout_taken ? stderr : stdout;
+      print_summary(text_out, *o, profile, summary, completion);
+      if (span) print_span(text_out, events, *span);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut run: %s\n", e.what());

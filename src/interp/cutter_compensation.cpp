@@ -31,6 +31,10 @@ constexpr int kLengthSamples = 32;
 constexpr int kMaxCrossingPasses = 1000;
 // A shift along the plane normal below this is rounding: the curve is built unshifted.
 constexpr double kNoShift = 1e-9;  // mm
+// Under CDOF a fold's loop is searched beyond MD20240 (see the header), but not without end: a
+// fold still open this many blocks after its own block is a collision (alarm 10751). A bound of
+// drycut's memory and time, not machine behaviour: the thesis programs' folds close within 27.
+constexpr int kFoldSearchBlocks = 256;
 
 [[noreturn]] void raise(int number, const std::string& detail, const BlockRef& block) {
   throw AlarmError(make_alarm(number, detail, SourceLocation{block.file_name(), block.line, 0}, block.text));
@@ -289,7 +293,7 @@ void CutterCompensation::add_motion(const PathElement& element) {
 }
 
 void CutterCompensation::resolve_crossings(size_t first_new, int check_blocks) {
-  const int oldest_block = block_serial_ - check_blocks;
+  const int oldest_block = oldest_searched_block(check_blocks);
   size_t index = first_new;
   for (int pass = 0; pass < kMaxCrossingPasses && index < window_.size(); ++pass) {
     // A gap bridge is never cut at a crossing of its own: it only ever lies inside a cut stretch.
@@ -381,9 +385,40 @@ void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earl
   window_ = std::move(kept);
 }
 
+std::optional<int> CutterCompensation::pending_fold_block() const {
+  // The oldest fold still open under CDOF: an offset running backwards (not a gap bridge, which
+  // is an inside corner and keeps the MD20240 reach).
+  for (const Item& item : window_) {
+    if (!item.piece || item.gap_bridge || item.piece->offset() == 0.0) continue;
+    if (item.element.compensation.collision_detection) continue;
+    if (item.piece->runs_backwards()) return item.block;
+  }
+  return std::nullopt;
+}
+
+int CutterCompensation::oldest_searched_block(int check_blocks) const {
+  // MD20240 blocks back; while a fold has outlived that reach, back to the blocks it could reach
+  // when it came in (the loop's incoming side), which the window keeps for it.
+  const int reach = block_serial_ - check_blocks;
+  const auto fold = pending_fold_block();
+  if (fold && *fold <= reach) return std::min(reach, *fold - check_blocks);
+  return reach;
+}
+
 void CutterCompensation::release_old_blocks(int check_blocks) {
-  // The next block searches the blocks from block_serial_ + 1 - check_blocks on.
-  while (!window_.empty() && window_.front().block <= block_serial_ - check_blocks) emit_front();
+  // The next block searches the blocks from block_serial_ + 1 - check_blocks on. An open fold
+  // (CDOF) keeps itself and the blocks its loop may close with, up to kFoldSearchBlocks.
+  const auto fold = pending_fold_block();
+  const bool hold = fold && block_serial_ - *fold < kFoldSearchBlocks;
+  while (!window_.empty() && window_.front().block <= block_serial_ - check_blocks) {
+    if (hold && window_.front().block >= *fold - check_blocks) break;
+    emit_front();
+  }
+  if (!hold) return;
+  // An inside corner keeps its MD20240 reach while a fold holds the window.
+  for (const Item& item : window_)
+    if (item.piece && item.gap_bridge && item.block <= block_serial_ - check_blocks)
+      raise(10751, "no intersection of the offset paths within the checked blocks (MD20240)", item.element.source);
 }
 
 void CutterCompensation::flush_window() {

@@ -26,17 +26,24 @@
 //   fold is removed by cutting the raw path at the point where it crosses itself, which is where
 //   the control's intersection search finds it: between the offsets of one block, of adjacent
 //   blocks, or of blocks up to MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS apart (so an inside corner
-//   followed by blocks shorter than r tan(angle/2) is resolved several blocks on). Only a stretch
+//   followed by blocks shorter than r tan(angle/2) is resolved several blocks on; a fold under
+//   CDOF further, see below). Only a stretch
 //   that contains such a fold is cut: a crossing of sound offsets (a contour that crosses itself,
 //   a loop over the same path at another depth) stays. The approach and the retract move take
 //   part in the search (an entry spline that turns back sharply loops across its approach).
 //   Every block cut out completely gets warning 10763. Alarm 10751 (collision danger): a gap
-//   bridge or a backwards-running offset that is still in the path when it leaves the window
-//   (no crossing within the checked blocks).
-// - CDON and CDOF search the same MD20240 blocks: the manual's CDOF searches the previous block
-//   and, failing that, earlier ones; the experiment's programs (CDOF, the reset default) were
-//   milled with inside corners resolved several blocks on. Crossings are tested in the plane
-//   only.
+//   bridge that is still in the path when it leaves the window (no crossing within the checked
+//   blocks: an inside corner, W1 "Compensation at inner corners", predictive search over MD20240).
+// - Folds (an offset running backwards where the contour bends tighter than the tool radius, its
+//   blocks joined tangentially, so no inside corner between blocks): under CDON the MD20240 reach
+//   applies as to inside corners (10751 when the fold leaves the window uncut). Under CDOF (the
+//   reset default) the control searches the previous block and "if necessary even earlier
+//   blocks" (PGA, CDON/CDOF); MD20240 is the limit of CDON and of the inside-corner prediction.
+//   So an open CDOF fold holds the window (itself and the MD20240 blocks before it, where its
+//   loop's incoming side lies) until a later offset crosses it, however many blocks on; a fold
+//   still open at G40, at the end or kFoldSearchBlocks on is a collision (10751). Inside corners
+//   keep their MD20240 reach while a fold holds the window. Rule, evidence (the B-spline entry
+//   of EKVI_B_90 / POLAR_B_1): docs/controller-state.md, "Bottleneck detection and folds".
 // - The normal axis (Z under G17) follows the programmed blocks: where the tool centre is in step
 //   with the program it is at the programmed value; where the compensation shortens, cuts or
 //   joins blocks, the motion along the normal is spread over the in-plane length so that both
@@ -52,7 +59,8 @@
 //   them in a row (Dwell, Stop, ToolChange, DynamicsChange, zero in-plane motion): alarm 10762.
 //   A plane other than the selection plane while active: alarm 10757.
 // - Radius or side changed while active: the two offsets are joined by a straight move.
-// Memory: the window holds the elements of the last CUTCOM_MAXNUM_CHECK_BLOCKS blocks.
+// Memory: the window holds the elements of the last CUTCOM_MAXNUM_CHECK_BLOCKS blocks (more
+// while a CDOF fold is open, at most kFoldSearchBlocks).
 #include <deque>
 #include <optional>
 
@@ -91,6 +99,8 @@ class CutterCompensation : public ElementSink {
   bool cut_out_is_defective(size_t earlier, size_t later, const PieceCrossing& crossing) const;
   void cut_between(size_t earlier, size_t later, double u_earlier, double u_later);
   void release_old_blocks(int check_blocks);
+  std::optional<int> pending_fold_block() const;
+  int oldest_searched_block(int check_blocks) const;
   void flush_window();
   void emit_front();
   geometry::NormalRamp normal_axis_shift(const Item& item) const;

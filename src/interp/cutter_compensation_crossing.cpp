@@ -62,6 +62,17 @@ PieceCrossing refine(const OffsetPiece& a, const OffsetPiece& b, PieceCrossing g
 
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
+// Bounding boxes of two polylines apart: no crossing at all (saves the pairwise segment test
+// while a fold holds a long window).
+bool polylines_apart(const std::vector<Point2>& a, const std::vector<Point2>& b) {
+  constexpr double slack = 1e-9;
+  Point2 a_min = a.front(), a_max = a.front(), b_min = b.front(), b_max = b.front();
+  for (const Point2& p : a) a_min = a_min.cwiseMin(p), a_max = a_max.cwiseMax(p);
+  for (const Point2& p : b) b_min = b_min.cwiseMin(p), b_max = b_max.cwiseMax(p);
+  return a_max.x() + slack < b_min.x() || b_max.x() + slack < a_min.x() || a_max.y() + slack < b_min.y() ||
+         b_max.y() + slack < a_min.y();
+}
+
 bool before(const PieceCrossing& x, const std::optional<PieceCrossing>& best) {  // for self crossings
   return !best || x.u_earlier < best->u_earlier ||
          (x.u_earlier == best->u_earlier && x.u_later > best->u_later);
@@ -76,6 +87,7 @@ std::vector<PieceCrossing> find_crossings(const OffsetPiece& earlier, const Offs
   const auto& qu = later.sample_parameters();
   const auto& qxy = later.sample_points();
   std::vector<PieceCrossing> all;
+  if (pxy.empty() || qxy.empty() || polylines_apart(pxy, qxy)) return all;
   const Point2 joint = plane.project(earlier.end());
   for (size_t i = 0; i + 1 < pxy.size(); ++i) {
     for (size_t j = 0; j + 1 < qxy.size(); ++j) {

@@ -48,6 +48,7 @@ void OffsetPiece::trim(double u_begin, double u_end) {
   const double length = base_->length();
   u_begin_ = std::clamp(u_begin, 0.0, length);
   u_end_ = std::clamp(u_end, u_begin_, length);
+  backwards_.reset();
   resample();
 }
 

@@ -4,6 +4,7 @@
 // base arc lengths [u_begin, u_end]. Pieces stay editable (trimmed at intersections) until the
 // compensation window releases them; only then are they turned into a Curve.
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "interp/geometry/curve.hpp"
@@ -41,7 +42,11 @@ class OffsetPiece {
 
   // True where the offset runs against the programmed direction somewhere in the stretch (an
   // arc or bend tighter than the tool radius that bottleneck detection did not cut out).
-  bool runs_backwards() const { return runs_backwards(u_begin_, u_end_); }
+  // Cached until the next trim (the window asks it of every piece after every block).
+  bool runs_backwards() const {
+    if (!backwards_) backwards_ = runs_backwards(u_begin_, u_end_);
+    return *backwards_;
+  }
   // The same within the base parameters [u0, u1] of the stretch.
   bool runs_backwards(double u0, double u1) const;
 
@@ -71,6 +76,7 @@ class OffsetPiece {
   double u_begin_ = 0.0;
   double u_end_ = 0.0;
   bool straight_ = false;  // base curvature zero: the offset is straight too
+  mutable std::optional<bool> backwards_;  // runs_backwards() of the current stretch
   std::vector<double> sample_u_;
   std::vector<Eigen::Vector2d> sample_xy_;
 };

@@ -34,6 +34,20 @@ void add_outcome(json& summary, const RunCompletion& c, const std::optional<moti
   summary["end_position_mm"] = end ? json{{"x", end->x()}, {"y", end->y()}, {"z", end->z()}} : json();
 }
 
+// `events` {name: seconds or null} and the span asked for (`span` "FROM..TO", `span_s`; null
+// without --span or when an event of it has no time).
+void add_events(json& summary, const RunEventRecorder& recorder, const std::optional<RunSpan>& span) {
+  json events = json::object();
+  for (RunEvent e : kRunEvents) {
+    const auto t = recorder.time_of(e);
+    events[std::string(event_name(e))] = t ? json(*t) : json();
+  }
+  summary["events"] = events;
+  summary["span"] = span ? json(span_name(*span)) : json();
+  const auto s = span ? recorder.span_s(*span) : std::nullopt;
+  summary["span_s"] = s ? json(*s) : json();
+}
+
 json alarm_object(const Alarm& a) {
   return json{{"number", a.number},
               {"severity", a.severity == Severity::Warning ? "warning" : "alarm"},
@@ -151,13 +165,15 @@ void RunReportWriter::flush() {
 }
 
 void RunReportWriter::finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics,
-                             const RunCompletion& completion, const std::optional<motion::Vec3>& end_position_mm) {
+                             const RunCompletion& completion, const std::optional<motion::Vec3>& end_position_mm,
+                             const RunEventRecorder* events, const std::optional<RunSpan>& span) {
   json dips = json::array();
   for (const auto& d : summary.dips) dips.push_back(dip_object(d));
   json alarms = json::array(), warnings = json::array();
   for (const auto& a : diagnostics.items()) (a.severity == Severity::Warning ? warnings : alarms).push_back(alarm_object(a));
   json summary_with_outcome = summary_object(summary);
   add_outcome(summary_with_outcome, completion, end_position_mm);
+  if (events) add_events(summary_with_outcome, *events, span);
   if (layout_ == RunJsonLayout::Lines) {
     for (const auto& d : dips) buffer_ += typed_line("dip", d);
     for (const auto& a : alarms) buffer_ += typed_line("alarm", a);

@@ -23,6 +23,9 @@
 // The summary says whether the run went to the end (`complete`, `stopped_at` {file, line,
 // alarm} or null) and where the last planned motion ended (`end_position_mm` {x, y, z},
 // machine coordinates, or null without motion).
+// Given the run's events, the summary also has `events` {start, after_m0, after_dwell,
+// contour_start, contour_end, end: seconds or null}, `span` ("FROM..TO" or null) and `span_s`
+// (report/run_events.hpp).
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -33,6 +36,7 @@
 #include "machine/alarm.hpp"
 #include "motion/plan_result.hpp"
 #include "report/run_completion.hpp"
+#include "report/run_events.hpp"
 
 namespace drycut::report {
 
@@ -45,7 +49,8 @@ class RunReportWriter : public motion::PlanObserver {
   void on_block(const motion::BlockTiming& timing) override;
   // Closes the document (or ends the stream with the summary line) and flushes.
   void finish(const motion::PlanSummary& summary, const Diagnostics& diagnostics, const RunCompletion& completion,
-              const std::optional<motion::Vec3>& end_position_mm);
+              const std::optional<motion::Vec3>& end_position_mm, const RunEventRecorder* events = nullptr,
+              const std::optional<RunSpan>& span = std::nullopt);
 
   static constexpr size_t kFlushBytes = 1 << 16;
 

@@ -96,17 +96,6 @@ TEST(ThesisCompensation, AllProgramsRunWithoutAlarm) {
   ASSERT_EQ(programs.size(), 48u);
   for (const auto& program : programs) {
     const auto run = run_thesis_program(program, machine::default_profile());
-    // KNOWN GAP: the B-spline entry span N130 of these two turns a ~120 degree inside bend of
-    // radius 0.04-0.08 mm, so its offset folds back over a 2 mm arc. The loop after the bend
-    // curves away first, and in the plane the fold closes only 25 (POLAR_B_1) or 27 (EKVI_B_90)
-    // blocks later, beyond MD20240 = 16 of the profile: 10751 is the control's answer under this
-    // model (see EntrySplineFoldClosesOnlyBeyondTheProfileWindow). Remove from this list when
-    // the model changes (the test then fails to remind).
-    const bool known_gap = program.main.file_name == "EKVI_B_90.MPF" || program.main.file_name == "POLAR_B_1.MPF";
-    if (known_gap) {
-      EXPECT_TRUE(run->alarm) << program.main.file_name << " runs now: remove it from the known gaps";
-      continue;
-    }
     EXPECT_FALSE(run->alarm) << program.main.file_name << ": " << run->alarm->format();
     int warnings = 0;
     for (const Alarm& a : run->compensation_diagnostics.items()) {
@@ -118,14 +107,20 @@ TEST(ThesisCompensation, AllProgramsRunWithoutAlarm) {
   }
 }
 
-// Where the fold of the two known gaps closes. Reference: an independent offset of the programmed
-// path sampled every 0.002 mm (p + 2 mm * right normal from central differences) has exactly one
-// in-plane crossing that removes the entry fold: N130 at Z 4.61 (23.23, -2.61) with the loop
-// offset in subprogram block N27 (EKVI_POSTUPNE_B_90, line 28) resp. N25 (POLAR_POSTUPNE_B_1,
-// line 26) at Z 0.07. So the fold is cut only with a window reaching that block, the blocks in
-// between (sub lines 2 .. line-1) are skipped with 10763, and with the profile's 16 blocks the
-// entry span leaves the window still folded (10751 on N130).
-TEST(ThesisCompensation, EntrySplineFoldClosesOnlyBeyondTheProfileWindow) {
+// The fold of the B-spline entry (EKVI_B_90, POLAR_B_1). Reference: an independent offset of
+// the programmed path sampled every 0.002 mm (p + 2 mm * right normal from central differences)
+// has exactly one in-plane crossing that removes the entry fold: N130 at Z 4.61 (23.23, -2.61)
+// with the loop offset in subprogram block N27 (EKVI_POSTUPNE_B_90, line 28) resp. N25
+// (POLAR_POSTUPNE_B_1, line 26) at Z 0.07. The programs run under CDOF (the reset default), so
+// the fold is cut there although that lies beyond MD20240 = 16 of the profile, and the blocks in
+// between (sub lines 2 .. line-1) are skipped with 10763. Under CDON the MD20240 reach applies:
+// 10751 on N130 unless the window reaches the closing block.
+std::string with_cdon(const std::string& main_text) {
+  const auto at = main_text.find("G42");
+  return main_text.substr(0, at) + "CDON " + main_text.substr(at);
+}
+
+TEST(ThesisCompensation, EntrySplineFoldIsCutWhereItClosesUnderCdof) {
   const auto programs = workload::thesis_programs();
   struct Case {
     std::string program;
@@ -133,18 +128,7 @@ TEST(ThesisCompensation, EntrySplineFoldClosesOnlyBeyondTheProfileWindow) {
   };
   for (const Case& c : {Case{"EKVI_B_90.MPF", 28}, Case{"POLAR_B_1.MPF", 26}}) {
     const auto& program = find_program(programs, c.program);
-    const auto within_profile = run_thesis_program(program, machine::default_profile());
-    ASSERT_TRUE(within_profile->alarm) << c.program;
-    EXPECT_EQ(within_profile->alarm->number, 10751) << c.program;
-    EXPECT_EQ(within_profile->alarm->where.line, 14u) << c.program;  // N130, the entry span
-
-    // The search reaches back MD20240 blocks: from sub block N(k) (line k + 1) to N130 is k.
-    const int blocks_to_closure = static_cast<int>(c.closing_line) - 1;
-    machine::MachineProfile wide = machine::default_profile();
-    wide.cutcom_maxnum_check_blocks = blocks_to_closure - 1;
-    EXPECT_TRUE(run_thesis_program(program, wide)->alarm) << c.program << ": closes with a window one block shorter";
-    wide.cutcom_maxnum_check_blocks = blocks_to_closure;
-    const auto run = run_thesis_program(program, wide);
+    const auto run = run_thesis_program(program, machine::default_profile());
     ASSERT_FALSE(run->alarm) << c.program << ": " << run->alarm->format();
     std::vector<uint32_t> skipped;
     for (const Alarm& a : run->compensation_diagnostics.items()) {
@@ -155,6 +139,20 @@ TEST(ThesisCompensation, EntrySplineFoldClosesOnlyBeyondTheProfileWindow) {
     std::vector<uint32_t> expected;
     for (uint32_t line = 2; line < c.closing_line; ++line) expected.push_back(line);
     EXPECT_EQ(skipped, expected) << c.program;
+
+    // CDON: the search reaches back MD20240 blocks, from sub block N(k) (line k + 1) to N130 is k.
+    workload::ThesisProgram cdon = program;
+    cdon.main.text = with_cdon(program.main.text);
+    const auto strict = run_thesis_program(cdon, machine::default_profile());
+    ASSERT_TRUE(strict->alarm) << c.program;
+    EXPECT_EQ(strict->alarm->number, 10751) << c.program;
+    EXPECT_EQ(strict->alarm->where.line, 14u) << c.program;  // N130, the entry span
+    const int blocks_to_closure = static_cast<int>(c.closing_line) - 1;
+    machine::MachineProfile wide = machine::default_profile();
+    wide.cutcom_maxnum_check_blocks = blocks_to_closure - 1;
+    EXPECT_TRUE(run_thesis_program(cdon, wide)->alarm) << c.program << ": closes with a window one block shorter";
+    wide.cutcom_maxnum_check_blocks = blocks_to_closure;
+    EXPECT_FALSE(run_thesis_program(cdon, wide)->alarm) << c.program;
   }
 }
 
