@@ -16,5 +16,6 @@ void register_language(CLI::App& app);
 void register_report(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_experiment(CLI::App& app);
+void register_profile(CLI::App& app);
 
 }  // namespace drycut::app

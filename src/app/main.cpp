@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   drycut::app::register_deviation(app);
   drycut::app::register_sweep(app);
   drycut::app::register_language(app);
+  drycut::app::register_profile(app);
 
   try {
     app.parse(argc, argv);
