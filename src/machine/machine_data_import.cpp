@@ -42,6 +42,9 @@ bool all_digits(const std::string& s) {
   return !s.empty() && s.size() < 6 && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
+// A datum used as a count, number or mask: rounded and clamped, so no value converts out of range.
+int to_int(double v) { return static_cast<int>(std::lround(std::clamp(v, -1.0e9, 1.0e9))); }
+
 bool is_channel_area(const std::string& area) { return area == "MC" || area == "SC" || area == "MCS" || area == "SCS"; }
 
 class Importer {
@@ -162,7 +165,7 @@ class Importer {
   bool map_int(const std::string& key, std::initializer_list<std::string> md_keys, int& field, const std::string& what) {
     double v = field;
     const bool found = map_value(key, md_keys, 1.0, v, what, std::to_string(field));
-    field = static_cast<int>(std::lround(v));
+    field = to_int(v);
     return found;
   }
 
@@ -171,19 +174,19 @@ class Importer {
   void read_configuration() {
     for (size_t g = 0; g < 3; ++g) {
       const std::string idx = "[" + std::to_string(g) + "]";
-      geo_channel_axis_[g] = static_cast<int>(number_of("$MC_AXCONF_GEOAX_ASSIGN_TAB" + idx).value_or(g + 1.0));
+      geo_channel_axis_[g] = to_int(number_of("$MC_AXCONF_GEOAX_ASSIGN_TAB" + idx).value_or(g + 1.0));
       const auto name = text_of("$MC_AXCONF_GEOAX_NAME_TAB" + idx);
       if (name && *name != kGeometry[g])
         out_.notes.push_back("geometry axis " + std::to_string(g + 1) + " is named '" + *name + "' on the control; the profile calls it " +
                              kGeometry[g]);
     }
     for (int c = 1; c <= 20; ++c)
-      if (auto m = number_of("$MC_AXCONF_MACHAX_USED[" + std::to_string(c - 1) + "]")) channel_machine_axis_[c] = static_cast<int>(*m);
+      if (auto m = number_of("$MC_AXCONF_MACHAX_USED[" + std::to_string(c - 1) + "]")) channel_machine_axis_[c] = to_int(*m);
     if (channel_machine_axis_.empty()) {
       out_.missing.push_back("MD20070 $MC_AXCONF_MACHAX_USED: not in the files; channel axes 1, 2, 3 taken as machine axes 1, 2, 3");
       for (int c = 1; c <= 3; ++c) channel_machine_axis_[c] = c;
     }
-    master_spindle_ = static_cast<int>(number_of("$MC_SPIND_DEF_MASTER_SPIND").value_or(1.0));
+    master_spindle_ = to_int(number_of("$MC_SPIND_DEF_MASTER_SPIND").value_or(1.0));
     for (int axis : axes_seen_)
       if (number_of("$MA_SPIND_ASSIGN_TO_MACHAX[#" + std::to_string(axis) + "]").value_or(0.0) != 0.0) spindle_axes_.insert(axis);
   }
@@ -241,7 +244,7 @@ class Importer {
       map_value(k + "modulo_range_deg", {axis_key("MODULO_RANGE", m)}, 1.0, a.modulo_range,
                 "axis " + a.name + " MD30330 MODULO_RANGE", "360 deg");
     if (const MachineDatum* d = take({axis_key("MISC_FUNCTION_MASK", m)})) {
-      a.misc_function_mask = static_cast<int>(std::get<double>(d->value));
+      a.misc_function_mask = to_int(std::get<double>(d->value));
       out_.sources[k + "misc_function_mask"] = {written_name(*d), d->location()};
     }
   }

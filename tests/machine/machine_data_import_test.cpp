@@ -192,5 +192,23 @@ TEST(MachineDataImport, InvalidValuesFailTheProfileValidation) {
   EXPECT_THROW(import_text("$MA_POS_LIMIT_MINUS[AX1]=10\n$MA_POS_LIMIT_PLUS[AX1]=-10\n"), ProfileError);
 }
 
+TEST(MachineDataImport, HostileInputNeverCrashes) {
+  // Out-of-range numbers for counts and masks, NaN and infinity, unclosed brackets and strings,
+  // binary bytes: the import refuses values or reports lines, it never converts out of range.
+  std::string garbage = "$MC_AXCONF_MACHAX_USED[0]=1e300\n$MC_SPIND_DEF_MASTER_SPIND=-1e300\n"
+                        "$MA_MISC_FUNCTION_MASK[AX1]=1e40\n$MA_MAX_AX_VELO[AX1]=nan\n$MA_MAX_AX_VELO[AX2]=inf\n"
+                        "$MA_MAX_AX_VELO[AX99999999999]=5\n$MA_X[AX1=1\n$MN_Y=\"open\n'HFFFFFFFFFFFFFFFFFFFF'\n";
+  garbage += std::string("\0\x01\xff$\n$_=1\n$MN_=2\nCHANDATA(1e9)\n", 28);
+  MachineDataText text;
+  parse_machine_data_text(garbage, "g.txt", text);
+  EXPECT_FALSE(text.not_understood.empty());
+  try {
+    const MachineDataImport r = import_machine_data(text, "g");
+    EXPECT_DOUBLE_EQ(r.profile.axes[1].max_velocity_mm_s, 10000.0 / 60);  // inf refused: default
+  } catch (const ProfileError&) {
+    // A value the profile refuses is a clean error, which is also fine.
+  }
+}
+
 }  // namespace
 }  // namespace drycut::machine
