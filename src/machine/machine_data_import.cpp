@@ -45,6 +45,8 @@ bool all_digits(const std::string& s) {
 // A datum used as a count, number or mask: rounded and clamped, so no value converts out of range.
 int to_int(double v) { return static_cast<int>(std::lround(std::clamp(v, -1.0e9, 1.0e9))); }
 
+bool is_axis_area(const std::string& area) { return area == "MA" || area == "SA" || area == "MAS" || area == "SAS"; }
+
 bool is_channel_area(const std::string& area) { return area == "MC" || area == "SC" || area == "MCS" || area == "SCS"; }
 
 class Importer {
@@ -63,6 +65,7 @@ class Importer {
     read_nc_and_channel();
     read_spindle();
     read_reset_gcodes();
+    read_settable_frames();
     keep_the_rest();
   }
 
@@ -96,7 +99,7 @@ class Importer {
       if (!d.index.empty()) {
         key += '[';
         for (size_t i = 0; i < d.index.size(); ++i) {
-          const int axis = axis_number(d.index[i]);
+          const int axis = is_axis_area(d.area) ? axis_number(d.index[i]) : 0;
           if (axis > 0) axes_seen_.insert(axis);
           key += (i ? "," : "") + (axis > 0 ? "#" + std::to_string(axis) : d.index[i]);
         }
@@ -378,6 +381,35 @@ class Importer {
                            "G1 G17 G40 G500 G60 G71 G90 G94 BRISK BNAT ENAT NORM G450 CDOF CFC FNORM taken");
   }
 
+  // Settable frames as the data backup writes them, one component per line: $P_UIFR[n,X,TR]
+  // (translation), FI (fine offset, added), RT (rotation, degrees). n = 1..4 is G54..G57,
+  // n = 5..99 G505..G599 (n = 0, G500, and scale/mirror components stay in machine_data).
+  void read_settable_frames() {
+    MachineProfile& p = out_.profile;
+    for (int n = 1; n <= 99; ++n) {
+      const std::string name = n <= 4 ? "G5" + std::to_string(n + 3) : "G5" + std::string(n < 10 ? "0" : "") + std::to_string(n);
+      const std::string key = "$P_UIFR[" + std::to_string(n) + ",";
+      Eigen::Vector3d offset = Eigen::Vector3d::Zero(), rotation = Eigen::Vector3d::Zero();
+      bool has_offset = false, has_rotation = false;
+      for (int g = 0; g < 3; ++g) {
+        const std::string axis = std::string(kGeometry[g]) + ",";
+        for (const char* component : {"TR", "FI"})
+          if (const MachineDatum* d = take({key + axis + component + "]"})) {
+            offset[g] += std::get<double>(d->value);
+            has_offset = true;
+            out_.sources["program.work_offsets_mm." + name] = {written_name(*d), d->location()};
+          }
+        if (const MachineDatum* d = take({key + axis + "RT]"})) {
+          rotation[g] = std::get<double>(d->value);
+          has_rotation = true;
+          out_.sources["program.work_offset_rotations_deg." + name] = {written_name(*d), d->location()};
+        }
+      }
+      if (has_offset) p.work_offsets[name] = offset;
+      if (has_rotation) p.work_offset_rotations_deg[name] = rotation;
+    }
+  }
+
   // --- the rest -------------------------------------------------------------------------------
 
   void keep_the_rest() {
@@ -394,7 +426,7 @@ class Importer {
       if (!d.index.empty()) {
         name += '[';
         for (size_t i = 0; i < d.index.size(); ++i) {
-          const int axis = axis_number(d.index[i]);
+          const int axis = is_axis_area(d.area) ? axis_number(d.index[i]) : 0;
           auto it = machine_axis_names_.find(axis);
           name += (i ? "," : "") + (axis > 0 && it != machine_axis_names_.end() ? it->second : d.index[i]);
         }

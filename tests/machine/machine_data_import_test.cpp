@@ -115,6 +115,20 @@ TEST(MachineDataImport, PathChannelAndSpindleData) {
   EXPECT_DOUBLE_EQ(p.spindle_posctrl_accel_rev_s2, 40.0);
 }
 
+TEST(MachineDataImport, SettableFramesFromTheFrameBackup) {
+  const MachineDataImport r = import_test_file();
+  const MachineProfile& p = r.profile;
+  // G54 = $P_UIFR[1]: translation plus fine offset on Z (-402.25 + 0.05); G55 = $P_UIFR[2]: 90° about Z.
+  ASSERT_EQ(p.work_offsets.count("G54"), 1u);
+  EXPECT_DOUBLE_EQ(p.work_offsets.at("G54").x(), -250.5);
+  EXPECT_DOUBLE_EQ(p.work_offsets.at("G54").y(), -180.0);
+  EXPECT_DOUBLE_EQ(p.work_offsets.at("G54").z(), -402.2);
+  EXPECT_DOUBLE_EQ(p.work_offset_rotations_deg.at("G55").z(), 90.0);
+  EXPECT_EQ(p.work_offsets.count("G55"), 0u);
+  EXPECT_DOUBLE_EQ(p.machine_data.at("$P_UIFR[1,X,SC]"), 1.0);  // scale: not modelled, kept
+  EXPECT_EQ(r.sources.at("program.work_offset_rotations_deg.G55").origin, kFile + ":97");
+}
+
 TEST(MachineDataImport, SourcesNameTheDatumAndLine) {
   const MachineDataImport r = import_test_file();
   const ValueSource& v = r.sources.at("axes.X.max_velocity_mm_min");
