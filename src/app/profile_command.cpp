@@ -17,6 +17,8 @@
 #include "machine/machine_data_import.hpp"
 #include "machine/machine_profile.hpp"
 #include "machine/profile_md_names.hpp"
+#include "machine/profile_units.hpp"
+#include "default_profile_json.hpp"
 
 namespace drycut::app {
 namespace {
@@ -82,14 +84,28 @@ std::string quantity_stem(const std::string& last) {
   return last;
 }
 
-// Whether the profile text itself gives the key (in any accepted unit).
+bool is_unit_suffix(const std::string& suffix) {
+  using machine::Dimension;
+  for (Dimension d : {Dimension::Length, Dimension::Velocity, Dimension::Acceleration, Dimension::Jerk, Dimension::Time,
+                      Dimension::Angle, Dimension::AngularVelocity, Dimension::AngularAcceleration, Dimension::AngularJerk})
+    for (const auto& u : machine::units_of(d))
+      if (u.suffix == suffix) return true;
+  return false;
+}
+
+// Whether the profile text itself gives the key, in any accepted unit (max_velocity_m_min for
+// max_velocity_mm_min), or as a whole object/array the key lies in.
 bool given_in(const std::set<std::string>& raw_keys, const std::string& key) {
   if (raw_keys.count(key)) return true;
   const size_t dot = key.rfind('.');
   const std::string parent = key.substr(0, dot + 1);
-  const std::string stem = parent + quantity_stem(key.substr(dot + 1)) + "_";
+  const std::string last = key.substr(dot + 1);
+  const std::string stem = quantity_stem(last);
+  if (stem == last) return false;
   for (const auto& r : raw_keys)
-    if (r.rfind(stem, 0) == 0 && r.find('.', parent.size()) == std::string::npos) return true;
+    if (r.size() > parent.size() + stem.size() + 1 && r.compare(0, parent.size(), parent) == 0 &&
+        r.compare(parent.size(), stem.size() + 1, stem + "_") == 0 && is_unit_suffix(r.substr(parent.size() + stem.size() + 1)))
+      return true;
   return false;
 }
 
@@ -99,7 +115,7 @@ int run_show(const std::string& path) {
   try {
     if (path.empty()) {
       profile = machine::default_profile();
-      raw = machine::profile_to_json(profile);
+      raw = kDefaultProfileJson;
       origin = "embedded mcv1210.json";
     } else {
       profile = machine::load_profile_file(path);

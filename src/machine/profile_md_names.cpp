@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 43> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -54,6 +54,9 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 43> kNames{{
     {"tool_table_complete", "- (drycut)"},
     {"swivel_kinematics", "$TC_CARR23"},
     {"base_unit", "MD10240 SCALING_SYSTEM_IS_METRIC"},
+    {"radius", "$TC_DP6 (tool radius)"},
+    {"length", "$TC_DP3 (tool length 1)"},
+    {"tools", "tool offsets $TC_DP"},
 }};
 
 // Unit suffixes written by profile_to_json, longest first.
@@ -74,6 +77,20 @@ void flatten(const nlohmann::ordered_json& node, const std::string& path,
   rows.emplace_back(path, node.dump());
 }
 
+// The datum of one key component, with or without its unit suffix; empty when none.
+std::string_view name_of_component(std::string_view last) {
+  for (auto [stem, md] : kNames)
+    if (last == stem) return md;
+  for (std::string_view suffix : kUnitSuffixes) {
+    if (last.size() > suffix.size() && last.ends_with(suffix)) {
+      const std::string_view stem = last.substr(0, last.size() - suffix.size());
+      for (auto [name, md] : kNames)
+        if (stem == name) return md;
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> flatten_profile_json(const std::string& json_text) {
@@ -83,17 +100,16 @@ std::vector<std::pair<std::string, std::string>> flatten_profile_json(const std:
 }
 
 std::string md_name_of(std::string_view key_path) {
-  std::string_view last = key_path.substr(key_path.rfind('.') + 1);
-  for (auto [stem, md] : kNames)
-    if (last == stem) return std::string(md);
-  for (std::string_view suffix : kUnitSuffixes) {
-    if (last.size() > suffix.size() && last.ends_with(suffix)) {
-      const std::string_view stem = last.substr(0, last.size() - suffix.size());
-      for (auto [name, md] : kNames)
-        if (stem == name) return std::string(md);
-    }
-  }
   if (key_path.starts_with("machine_data.")) return std::string(key_path.substr(13));
+  // The innermost key component that names a datum ("program.work_offsets_mm.G54" -> work_offsets).
+  while (!key_path.empty()) {
+    const size_t dot = key_path.rfind('.');
+    std::string_view last = key_path.substr(dot == std::string_view::npos ? 0 : dot + 1);
+    last = last.substr(0, last.find('['));
+    if (auto md = name_of_component(last); !md.empty()) return std::string(md);
+    if (dot == std::string_view::npos) break;
+    key_path = key_path.substr(0, dot);
+  }
   return "-";
 }
 
