@@ -127,8 +127,9 @@ int run_show(const std::string& path) {
     return kExitUsage;
   }
   std::map<std::string, machine::ValueSource> sources;
+  std::vector<std::string> missing;
   if (!path.empty())
-    if (auto text = read_text(sources_path(path))) sources = machine::load_sources_json(*text);
+    if (auto text = read_text(sources_path(path))) sources = machine::load_sources_json(*text, &missing);
   std::set<std::string> raw_keys;
   for (const auto& [k, v] : machine::flatten_profile_json(raw)) raw_keys.insert(k);
   std::printf("%s\n", profile.name.c_str());
@@ -140,6 +141,8 @@ int run_show(const std::string& path) {
     const std::string shown = value.size() > 22 ? value.substr(0, 19) + "..." : value;
     std::printf("%-44s %-22s %-44s %s\n", key.c_str(), shown.c_str(), machine::md_name_of(key).c_str(), source.c_str());
   }
+  if (!missing.empty()) std::printf("missing from the machine data at import (default taken):\n");
+  for (const auto& m : missing) std::printf("  %s\n", m.c_str());
   return kExitOk;
 }
 

@@ -481,10 +481,13 @@ std::string sources_to_json(const MachineDataImport& r) {
   return root.dump(2);
 }
 
-std::map<std::string, ValueSource> load_sources_json(const std::string& json_text) {
+std::map<std::string, ValueSource> load_sources_json(const std::string& json_text, std::vector<std::string>* missing) {
   std::map<std::string, ValueSource> out;
   const nlohmann::json root = nlohmann::json::parse(json_text, nullptr, false);
   if (!root.is_object() || !root.contains("sources") || !root["sources"].is_object()) return out;
+  if (missing && root.contains("missing") && root["missing"].is_array())
+    for (const auto& m : root["missing"])
+      if (m.is_string()) missing->push_back(m.get<std::string>());
   for (auto it = root["sources"].begin(); it != root["sources"].end(); ++it) {
     const auto& v = it.value();
     if (v.is_object() && v.value("origin", nlohmann::json()).is_string())

@@ -46,6 +46,8 @@ MachineDataImport import_machine_data(const MachineDataText& text, const std::st
 // The source map as JSON text ({"key": {"datum": ..., "origin": ...}}, plus "missing" and
 // "notes"), written beside an imported profile; and read back (empty map when absent/invalid).
 std::string sources_to_json(const MachineDataImport& result);
-std::map<std::string, ValueSource> load_sources_json(const std::string& json_text);
+// `missing`, when given, receives the import's list of values taken as defaults.
+std::map<std::string, ValueSource> load_sources_json(const std::string& json_text,
+                                                     std::vector<std::string>* missing = nullptr);
 
 }  // namespace drycut::machine

@@ -39,6 +39,7 @@ TEST(ProfileCommand, ImportWritesProfileAndSourcesAndReportsMissing) {
   EXPECT_NE(show.out.find("MD32000 MAX_AX_VELO"), std::string::npos) << show.out;
   EXPECT_NE(show.out.find("mill_4axis_md.txt:77"), std::string::npos) << show.out;
   EXPECT_NE(show.out.find("9000.0"), std::string::npos) << show.out;  // 25 rev/min = 9000 deg/min
+  EXPECT_NE(show.out.find("missing from the machine data at import"), std::string::npos) << show.out;
 
   // The imported machine runs a program: G0 X300 under BRISK (reset table) from X0 on X
   // (30000 mm/min = 500 mm/s, 2.5 m/s²): accelerate 0.2 s over 50 mm, cruise 200 mm in 0.4 s,
