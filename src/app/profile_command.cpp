@@ -14,11 +14,11 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "default_profile_json.hpp"
 #include "machine/machine_data_import.hpp"
 #include "machine/machine_profile.hpp"
 #include "machine/profile_md_names.hpp"
 #include "machine/profile_units.hpp"
-#include "default_profile_json.hpp"
 
 namespace drycut::app {
 namespace {
@@ -53,7 +53,8 @@ int run_import(const ImportOptions& o) {
   machine::MachineDataImport result;
   try {
     for (const auto& f : o.files) machine::read_machine_data_file(f, text);
-    result = machine::import_machine_data(text, o.name.empty() ? std::filesystem::path(o.output).stem().string() : o.name);
+    result =
+        machine::import_machine_data(text, o.name.empty() ? std::filesystem::path(o.output).stem().string() : o.name);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "drycut: %s\n", e.what());
     return kExitUsage;
@@ -77,17 +78,20 @@ int run_import(const ImportOptions& o) {
 
 // The quantity of a canonical key without its unit ("max_velocity_mm_min" -> "max_velocity").
 std::string quantity_stem(const std::string& last) {
-  for (const char* suffix : {"_mm_min", "_deg_min", "_m_s2", "_deg_s2", "_m_s3", "_deg_s3", "_mm", "_deg", "_ms", "_s"}) {
+  for (const char* suffix :
+       {"_mm_min", "_deg_min", "_m_s2", "_deg_s2", "_m_s3", "_deg_s3", "_mm", "_deg", "_ms", "_s"}) {
     const std::string s = suffix;
-    if (last.size() > s.size() && last.compare(last.size() - s.size(), s.size(), s) == 0) return last.substr(0, last.size() - s.size());
+    if (last.size() > s.size() && last.compare(last.size() - s.size(), s.size(), s) == 0)
+      return last.substr(0, last.size() - s.size());
   }
   return last;
 }
 
 bool is_unit_suffix(const std::string& suffix) {
   using machine::Dimension;
-  for (Dimension d : {Dimension::Length, Dimension::Velocity, Dimension::Acceleration, Dimension::Jerk, Dimension::Time,
-                      Dimension::Angle, Dimension::AngularVelocity, Dimension::AngularAcceleration, Dimension::AngularJerk})
+  for (Dimension d :
+       {Dimension::Length, Dimension::Velocity, Dimension::Acceleration, Dimension::Jerk, Dimension::Time,
+        Dimension::Angle, Dimension::AngularVelocity, Dimension::AngularAcceleration, Dimension::AngularJerk})
     for (const auto& u : machine::units_of(d))
       if (u.suffix == suffix) return true;
   return false;
@@ -104,7 +108,8 @@ bool given_in(const std::set<std::string>& raw_keys, const std::string& key) {
   if (stem == last) return false;
   for (const auto& r : raw_keys)
     if (r.size() > parent.size() + stem.size() + 1 && r.compare(0, parent.size(), parent) == 0 &&
-        r.compare(parent.size(), stem.size() + 1, stem + "_") == 0 && is_unit_suffix(r.substr(parent.size() + stem.size() + 1)))
+        r.compare(parent.size(), stem.size() + 1, stem + "_") == 0 &&
+        is_unit_suffix(r.substr(parent.size() + stem.size() + 1)))
       return true;
   return false;
 }
@@ -154,7 +159,8 @@ void register_profile(CLI::App& app) {
   auto io = std::make_shared<ImportOptions>();
   CLI::App* imp = cmd->add_subcommand("import", "Machine data files (MD text, archive) -> a machine profile");
   imp->add_option("files", io->files, "Machine data files ($MN_/$MC_/$MA_ lines, CHANDATA sections)")->required();
-  imp->add_option("-o,--output", io->output, "The profile to write (PROFILE.json; the source map goes to PROFILE.sources.json)")
+  imp->add_option("-o,--output", io->output,
+                  "The profile to write (PROFILE.json; the source map goes to PROFILE.sources.json)")
       ->required();
   imp->add_option("--name", io->name, "The profile's name (default: the output file's name)");
   imp->callback([io] { throw ExitRequest{run_import(*io)}; });

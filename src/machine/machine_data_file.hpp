@@ -18,12 +18,12 @@
 namespace drycut::machine {
 
 struct MachineDatum {
-  std::string area;                 // "MN", "MC", "MA", "SN", "SC", "SA", ... (upper case)
-  std::string name;                 // "MAX_AX_VELO" (upper case, without $M?_)
-  std::vector<std::string> index;   // ["0", "AX1"], upper case; empty when not indexed
+  std::string area;                // "MN", "MC", "MA", "SN", "SC", "SA", ... (upper case)
+  std::string name;                // "MAX_AX_VELO" (upper case, without $M?_)
+  std::vector<std::string> index;  // ["0", "AX1"], upper case; empty when not indexed
   std::variant<double, std::string> value;
-  int channel = 1;                  // CHANDATA(n) in force (1 before any CHANDATA)
-  std::string file;                 // as given on the command line
+  int channel = 1;   // CHANDATA(n) in force (1 before any CHANDATA)
+  std::string file;  // as given on the command line
   int line = 0;
 
   std::string location() const { return file + ":" + std::to_string(line); }

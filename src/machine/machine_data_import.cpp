@@ -88,7 +88,8 @@ class Importer {
   void index(const MachineDataText& text) {
     for (const MachineDatum& d : text.data)
       if (d.area == "MN" && d.name == "AXCONF_MACHAX_NAME_TAB" && d.index.size() == 1 && all_digits(d.index[0]))
-        if (auto* s = std::get_if<std::string>(&d.value)) machine_axis_names_[std::stoi(d.index[0]) + 1] = upper_text(*s);
+        if (auto* s = std::get_if<std::string>(&d.value))
+          machine_axis_names_[std::stoi(d.index[0]) + 1] = upper_text(*s);
     std::set<int> other_channels;
     for (const MachineDatum& d : text.data) {
       if (is_channel_area(d.area) && d.channel != 1) {
@@ -108,7 +109,8 @@ class Importer {
       slots_[key] = Slot{&d};  // a later line for the same datum wins, as on reading in
     }
     for (int c : other_channels)
-      out_.notes.push_back("channel " + std::to_string(c) + ": its channel data are not imported (drycut models channel 1)");
+      out_.notes.push_back("channel " + std::to_string(c) +
+                           ": its channel data are not imported (drycut models channel 1)");
     for (const std::string& line : text.not_understood) out_.notes.push_back("not machine data, skipped: " + line);
   }
 
@@ -165,7 +167,8 @@ class Importer {
     out_.missing.push_back(what + " (" + key + "): not in the files, default " + default_text + " taken");
     return false;
   }
-  bool map_int(const std::string& key, std::initializer_list<std::string> md_keys, int& field, const std::string& what) {
+  bool map_int(const std::string& key, std::initializer_list<std::string> md_keys, int& field,
+               const std::string& what) {
     double v = field;
     const bool found = map_value(key, md_keys, 1.0, v, what, std::to_string(field));
     field = to_int(v);
@@ -180,18 +183,21 @@ class Importer {
       geo_channel_axis_[g] = to_int(number_of("$MC_AXCONF_GEOAX_ASSIGN_TAB" + idx).value_or(g + 1.0));
       const auto name = text_of("$MC_AXCONF_GEOAX_NAME_TAB" + idx);
       if (name && *name != kGeometry[g])
-        out_.notes.push_back("geometry axis " + std::to_string(g + 1) + " is named '" + *name + "' on the control; the profile calls it " +
-                             kGeometry[g]);
+        out_.notes.push_back("geometry axis " + std::to_string(g + 1) + " is named '" + *name +
+                             "' on the control; the profile calls it " + kGeometry[g]);
     }
     for (int c = 1; c <= 20; ++c)
-      if (auto m = number_of("$MC_AXCONF_MACHAX_USED[" + std::to_string(c - 1) + "]")) channel_machine_axis_[c] = to_int(*m);
+      if (auto m = number_of("$MC_AXCONF_MACHAX_USED[" + std::to_string(c - 1) + "]"))
+        channel_machine_axis_[c] = to_int(*m);
     if (channel_machine_axis_.empty()) {
-      out_.missing.push_back("MD20070 $MC_AXCONF_MACHAX_USED: not in the files; channel axes 1, 2, 3 taken as machine axes 1, 2, 3");
+      out_.missing.push_back(
+          "MD20070 $MC_AXCONF_MACHAX_USED: not in the files; channel axes 1, 2, 3 taken as machine axes 1, 2, 3");
       for (int c = 1; c <= 3; ++c) channel_machine_axis_[c] = c;
     }
     master_spindle_ = to_int(number_of("$MC_SPIND_DEF_MASTER_SPIND").value_or(1.0));
     for (int axis : axes_seen_)
-      if (number_of("$MA_SPIND_ASSIGN_TO_MACHAX[#" + std::to_string(axis) + "]").value_or(0.0) != 0.0) spindle_axes_.insert(axis);
+      if (number_of("$MA_SPIND_ASSIGN_TO_MACHAX[#" + std::to_string(axis) + "]").value_or(0.0) != 0.0)
+        spindle_axes_.insert(axis);
   }
 
   int machine_axis_of_channel_axis(int c) const {
@@ -199,8 +205,12 @@ class Importer {
     return it == channel_machine_axis_.end() ? c : it->second;
   }
 
-  std::string axis_key(const char* md, int axis) const { return std::string("$MA_") + md + "[#" + std::to_string(axis) + "]"; }
-  std::string dyn_key(const char* md, int axis) const { return std::string("$MA_") + md + "[0,#" + std::to_string(axis) + "]"; }
+  std::string axis_key(const char* md, int axis) const {
+    return std::string("$MA_") + md + "[#" + std::to_string(axis) + "]";
+  }
+  std::string dyn_key(const char* md, int axis) const {
+    return std::string("$MA_") + md + "[0,#" + std::to_string(axis) + "]";
+  }
 
   void read_axis(int m, bool geometry, AxisData& a) {
     const std::string k = "axes." + a.name + ".";
@@ -208,7 +218,8 @@ class Importer {
     if (const MachineDatum* d = take({axis_key("IS_ROT_AX", m)})) {
       const bool rotary = std::get<double>(d->value) != 0.0;
       if (rotary && geometry)
-        out_.notes.push_back(who + ": MD30300 IS_ROT_AX = 1 on a geometry axis; drycut's X, Y, Z are linear, taken as linear");
+        out_.notes.push_back(
+            who + ": MD30300 IS_ROT_AX = 1 on a geometry axis; drycut's X, Y, Z are linear, taken as linear");
       a.rotary = rotary && !geometry;
       out_.sources[k + "rotary"] = {written_name(*d), d->location()};
     }
@@ -224,17 +235,19 @@ class Importer {
     a.max_jerk_mm_s3 = 1.0e6;              // 1000 m/s³ or 10^6 deg/s³
     map_value(k + "max_velocity" + vel, {axis_key("MAX_AX_VELO", m)}, u.velocity, a.max_velocity_mm_s,
               who + " MD32000 MAX_AX_VELO", a.rotary ? "27.78 rev/min (10000 deg/min)" : "10000 mm/min");
-    map_value(k + "max_accel" + acc, {dyn_key("MAX_AX_ACCEL", m), axis_key("MAX_AX_ACCEL", m)}, u.accel, a.max_accel_mm_s2,
-              who + " MD32300 MAX_AX_ACCEL", a.rotary ? "2.78 rev/s² (1000 deg/s²)" : "1 m/s²");
+    map_value(k + "max_accel" + acc, {dyn_key("MAX_AX_ACCEL", m), axis_key("MAX_AX_ACCEL", m)}, u.accel,
+              a.max_accel_mm_s2, who + " MD32300 MAX_AX_ACCEL", a.rotary ? "2.78 rev/s² (1000 deg/s²)" : "1 m/s²");
     map_value(k + "max_jerk" + jrk, {dyn_key("MAX_AX_JERK", m), axis_key("MAX_AX_JERK", m)}, u.jerk, a.max_jerk_mm_s3,
               who + " MD32431 MAX_AX_JERK", a.rotary ? "2778 rev/s³ (10^6 deg/s³)" : "1000 m/s³");
     a.transition_jerk_mm_s3 = a.max_jerk_mm_s3;
-    map_value(k + "transition_jerk" + jrk, {dyn_key("PATH_TRANS_JERK_LIM", m), axis_key("PATH_TRANS_JERK_LIM", m)}, u.jerk,
-              a.transition_jerk_mm_s3, who + " MD32432 PATH_TRANS_JERK_LIM", "= MAX_AX_JERK");
+    map_value(k + "transition_jerk" + jrk, {dyn_key("PATH_TRANS_JERK_LIM", m), axis_key("PATH_TRANS_JERK_LIM", m)},
+              u.jerk, a.transition_jerk_mm_s3, who + " MD32432 PATH_TRANS_JERK_LIM", "= MAX_AX_JERK");
     map_value(k + "pos_velocity" + vel, {axis_key("POS_AX_VELO", m)}, u.velocity, a.pos_velocity_mm_s,
               who + " MD32060 POS_AX_VELO", a.rotary ? "10000 deg/min" : "10000 mm/min");
-    map_value(k + "min_" + pos, {axis_key("POS_LIMIT_MINUS", m)}, 1.0, a.min_mm, who + " MD36100 POS_LIMIT_MINUS", "-1e9 (no limit)");
-    map_value(k + "max_" + pos, {axis_key("POS_LIMIT_PLUS", m)}, 1.0, a.max_mm, who + " MD36110 POS_LIMIT_PLUS", "1e9 (no limit)");
+    map_value(k + "min_" + pos, {axis_key("POS_LIMIT_MINUS", m)}, 1.0, a.min_mm, who + " MD36100 POS_LIMIT_MINUS",
+              "-1e9 (no limit)");
+    map_value(k + "max_" + pos, {axis_key("POS_LIMIT_PLUS", m)}, 1.0, a.max_mm, who + " MD36110 POS_LIMIT_PLUS",
+              "1e9 (no limit)");
     if (a.rotary) read_rotary(m, k, a);
   }
 
@@ -254,14 +267,16 @@ class Importer {
 
   void read_extra_axes() {
     for (const auto& [c, m] : channel_machine_axis_) {
-      if (m == 0 || std::find(geo_channel_axis_.begin(), geo_channel_axis_.end(), c) != geo_channel_axis_.end()) continue;
+      if (m == 0 || std::find(geo_channel_axis_.begin(), geo_channel_axis_.end(), c) != geo_channel_axis_.end())
+        continue;
       if (spindle_axes_.count(m)) continue;  // a spindle, not a path or positioning axis
       std::string name;
       if (auto n = text_of("$MC_AXCONF_CHANAX_NAME_TAB[" + std::to_string(c - 1) + "]")) {
         name = upper_text(*n);
       } else if (static_cast<size_t>(c) <= kDefaultChannelAxisNames.size()) {
         name = kDefaultChannelAxisNames[c - 1];
-        out_.missing.push_back("MD20080 $MC_AXCONF_CHANAX_NAME_TAB[" + std::to_string(c - 1) + "]: not in the files, default name " + name);
+        out_.missing.push_back("MD20080 $MC_AXCONF_CHANAX_NAME_TAB[" + std::to_string(c - 1) +
+                               "]: not in the files, default name " + name);
       } else {
         out_.notes.push_back("channel axis " + std::to_string(c) + " has no name; not imported");
         continue;
@@ -281,7 +296,8 @@ class Importer {
     const MachineDatum* from = nullptr;
     bool differ = false;
     for (int g : geo_channel_axis_) {
-      const MachineDatum* d = take({dyn_key(md, machine_axis_of_channel_axis(g)), axis_key(md, machine_axis_of_channel_axis(g))});
+      const MachineDatum* d =
+          take({dyn_key(md, machine_axis_of_channel_axis(g)), axis_key(md, machine_axis_of_channel_axis(g))});
       if (!d) continue;
       const double v = std::get<double>(d->value);
       if (smallest && v != *smallest) differ = true;
@@ -294,12 +310,14 @@ class Importer {
     }
     field = *smallest;
     out_.sources[key] = {written_name(*from), from->location()};
-    if (differ) out_.notes.push_back(what + " differs between X, Y, Z; the smallest, " + format_number(field) + ", is taken");
+    if (differ)
+      out_.notes.push_back(what + " differs between X, Y, Z; the smallest, " + format_number(field) + ", is taken");
   }
 
   void read_geometry_axis_factors() {
     MachineProfile& p = out_.profile;
-    geometry_factor("MAX_ACCEL_OVL_FACTOR", "path.max_accel_ovl_factor", "MD32310 MAX_ACCEL_OVL_FACTOR", p.max_accel_ovl_factor);
+    geometry_factor("MAX_ACCEL_OVL_FACTOR", "path.max_accel_ovl_factor", "MD32310 MAX_ACCEL_OVL_FACTOR",
+                    p.max_accel_ovl_factor);
     geometry_factor("SOFT_ACCEL_FACTOR", "path.soft_accel_factor", "MD32433 SOFT_ACCEL_FACTOR", p.soft_accel_factor);
     geometry_factor("G00_ACCEL_FACTOR", "path.g0_accel_factor", "MD32434 G00_ACCEL_FACTOR", p.g0_accel_factor);
     geometry_factor("G00_JERK_FACTOR", "path.g0_jerk_factor", "MD32435 G00_JERK_FACTOR", p.g0_jerk_factor);
@@ -311,11 +329,13 @@ class Importer {
     const MachineDatum* ratio = take({"$MN_IPO_SYSCLOCK_TIME_RATIO"});
     if (sys && ratio) {
       p.ipo_cycle_s = std::get<double>(sys->value) * std::get<double>(ratio->value);
-      out_.sources["path.ipo_cycle_ms"] = {written_name(*sys) + " × " + written_name(*ratio), sys->location() + ", " + ratio->location()};
+      out_.sources["path.ipo_cycle_ms"] = {written_name(*sys) + " × " + written_name(*ratio),
+                                           sys->location() + ", " + ratio->location()};
       return;
     }
     out_.sources["path.ipo_cycle_ms"] = {"", "default"};
-    out_.missing.push_back(std::string("IPO cycle (path.ipo_cycle_ms): ") + (sys ? "" : "MD10050 SYSCLOCK_CYCLE_TIME ") +
+    out_.missing.push_back(std::string("IPO cycle (path.ipo_cycle_ms): ") +
+                           (sys ? "" : "MD10050 SYSCLOCK_CYCLE_TIME ") +
                            (ratio ? "" : "MD10070 IPO_SYSCLOCK_TIME_RATIO ") + "not in the files, default 4 ms taken");
   }
 
@@ -323,29 +343,35 @@ class Importer {
     MachineProfile& p = out_.profile;
     read_ipo_cycle();
     double metric = 1;
-    map_value("program.base_unit", {"$MN_SCALING_SYSTEM_IS_METRIC"}, 1.0, metric, "MD10240 SCALING_SYSTEM_IS_METRIC", "1 (mm)");
+    map_value("program.base_unit", {"$MN_SCALING_SYSTEM_IS_METRIC"}, 1.0, metric, "MD10240 SCALING_SYSTEM_IS_METRIC",
+              "1 (mm)");
     p.base_unit_inch = metric == 0.0;
     double jerk = -1;
-    if (map_value("path.max_path_jerk_m_s3", {"$MC_MAX_PATH_JERK[0]", "$MC_MAX_PATH_JERK"}, 1000.0, jerk, "MD20600 MAX_PATH_JERK",
-                  "the smallest axis jerk"))
+    if (map_value("path.max_path_jerk_m_s3", {"$MC_MAX_PATH_JERK[0]", "$MC_MAX_PATH_JERK"}, 1000.0, jerk,
+                  "MD20600 MAX_PATH_JERK", "the smallest axis jerk"))
       p.path_jerk_mm_s3 = jerk;
     else
       p.path_jerk_mm_s3 = std::min({p.axes[0].max_jerk_mm_s3, p.axes[1].max_jerk_mm_s3, p.axes[2].max_jerk_mm_s3});
-    map_value("path.curv_effect_on_path_accel", {"$MC_CURV_EFFECT_ON_PATH_ACCEL[0]", "$MC_CURV_EFFECT_ON_PATH_ACCEL"}, 1.0,
-              p.curv_effect_on_path_accel, "MD20602 CURV_EFFECT_ON_PATH_ACCEL", format_number(p.curv_effect_on_path_accel));
-    map_value("program.circle_error_const_mm", {"$MC_CIRCLE_ERROR_CONST", "$MN_CIRCLE_ERROR_CONST"}, 1.0, p.circle_error_const_mm,
-              "MD21000 CIRCLE_ERROR_CONST", "0.01 mm");
-    map_value("program.circle_error_factor", {"$MC_CIRCLE_ERROR_FACTOR", "$MN_CIRCLE_ERROR_FACTOR"}, 1.0, p.circle_error_factor,
-              "MD21010 CIRCLE_ERROR_FACTOR", "0.001");
-    map_value("program.cutcom_decel_limit", {"$SC_CUTCOM_DECEL_LIMIT"}, 1.0, p.cutcom_decel_limit, "SD42528 CUTCOM_DECEL_LIMIT", "0");
-    map_int("program.cubic_spline_blocks", {"$MC_CUBIC_SPLINE_BLOCKS"}, p.cubic_spline_blocks, "MD20160 CUBIC_SPLINE_BLOCKS");
+    map_value("path.curv_effect_on_path_accel", {"$MC_CURV_EFFECT_ON_PATH_ACCEL[0]", "$MC_CURV_EFFECT_ON_PATH_ACCEL"},
+              1.0, p.curv_effect_on_path_accel, "MD20602 CURV_EFFECT_ON_PATH_ACCEL",
+              format_number(p.curv_effect_on_path_accel));
+    map_value("program.circle_error_const_mm", {"$MC_CIRCLE_ERROR_CONST", "$MN_CIRCLE_ERROR_CONST"}, 1.0,
+              p.circle_error_const_mm, "MD21000 CIRCLE_ERROR_CONST", "0.01 mm");
+    map_value("program.circle_error_factor", {"$MC_CIRCLE_ERROR_FACTOR", "$MN_CIRCLE_ERROR_FACTOR"}, 1.0,
+              p.circle_error_factor, "MD21010 CIRCLE_ERROR_FACTOR", "0.001");
+    map_value("program.cutcom_decel_limit", {"$SC_CUTCOM_DECEL_LIMIT"}, 1.0, p.cutcom_decel_limit,
+              "SD42528 CUTCOM_DECEL_LIMIT", "0");
+    map_int("program.cubic_spline_blocks", {"$MC_CUBIC_SPLINE_BLOCKS"}, p.cubic_spline_blocks,
+            "MD20160 CUBIC_SPLINE_BLOCKS");
     map_int("program.cutcom_maxnum_check_blocks", {"$MC_CUTCOM_MAXNUM_CHECK_BLOCKS"}, p.cutcom_maxnum_check_blocks,
             "MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS");
     map_int("program.cutcom_maxnum_dummy_blocks", {"$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS"}, p.cutcom_maxnum_dummy_blocks,
             "MD20250 CUTCOM_MAXNUM_DUMMY_BLOCKS");
     map_int("program.tool_change_mode", {"$MC_TOOL_CHANGE_MODE"}, p.tool_change_mode, "MD22550 TOOL_CHANGE_MODE");
-    map_int("program.tool_change_m_code", {"$MC_TOOL_CHANGE_M_CODE"}, p.tool_change_m_code, "MD22560 TOOL_CHANGE_M_CODE");
-    map_int("program.cutting_edge_default", {"$MC_CUTTING_EDGE_DEFAULT"}, p.cutting_edge_default, "MD20270 CUTTING_EDGE_DEFAULT");
+    map_int("program.tool_change_m_code", {"$MC_TOOL_CHANGE_M_CODE"}, p.tool_change_m_code,
+            "MD22560 TOOL_CHANGE_M_CODE");
+    map_int("program.cutting_edge_default", {"$MC_CUTTING_EDGE_DEFAULT"}, p.cutting_edge_default,
+            "MD20270 CUTTING_EDGE_DEFAULT");
   }
 
   // The master spindle's speed limit and accelerations (gear stage 1 where the datum has stages).
@@ -355,8 +381,9 @@ class Importer {
     for (int axis : spindle_axes_)
       if (number_of("$MA_SPIND_ASSIGN_TO_MACHAX[#" + std::to_string(axis) + "]") == master_spindle_) m = axis;
     const std::string s = "#" + std::to_string(m);
-    const std::string who = m ? "spindle " + std::to_string(master_spindle_) + " (machine axis AX" + std::to_string(m) + ")"
-                              : "master spindle (no axis with MD35000 SPIND_ASSIGN_TO_MACHAX)";
+    const std::string who =
+        m ? "spindle " + std::to_string(master_spindle_) + " (machine axis AX" + std::to_string(m) + ")"
+          : "master spindle (no axis with MD35000 SPIND_ASSIGN_TO_MACHAX)";
     map_value("path.max_spindle_speed_rpm", {"$MA_SPIND_VELO_LIMIT[" + s + "]"}, 1.0, p.max_spindle_speed_rpm,
               who + " MD35100 SPIND_VELO_LIMIT", "10000 rev/min");
     map_value("path.spindle_posctrl_velo_rpm", {"$MA_SPIND_POSCTRL_VELO[" + s + "]"}, 1.0, p.spindle_posctrl_velo_rpm,
@@ -374,11 +401,12 @@ class Importer {
   // MD20150 holds an index per G group; drycut does not translate the indices (yet) and starts
   // from the standard reset table of the machine data list instead (docs/machine-profile.md).
   void read_reset_gcodes() {
-    out_.profile.reset_gcodes = {"G1",   "G17",  "G40",  "G500", "G60", "G71", "G90", "G94",
+    out_.profile.reset_gcodes = {"G1",    "G17",  "G40",  "G500", "G60",  "G71",  "G90", "G94",
                                  "BRISK", "BNAT", "ENAT", "NORM", "G450", "CDOF", "CFC", "FNORM"};
     out_.sources["program.reset_gcodes"] = {"", "default"};
-    out_.missing.push_back("MD20150 GCODE_RESET_VALUES (program.reset_gcodes): not translated from the files, the standard table "
-                           "G1 G17 G40 G500 G60 G71 G90 G94 BRISK BNAT ENAT NORM G450 CDOF CFC FNORM taken");
+    out_.missing.push_back(
+        "MD20150 GCODE_RESET_VALUES (program.reset_gcodes): not translated from the files, the standard table "
+        "G1 G17 G40 G500 G60 G71 G90 G94 BRISK BNAT ENAT NORM G450 CDOF CFC FNORM taken");
   }
 
   // Settable frames as the data backup writes them, one component per line: $P_UIFR[n,X,TR]
@@ -387,7 +415,8 @@ class Importer {
   void read_settable_frames() {
     MachineProfile& p = out_.profile;
     for (int n = 1; n <= 99; ++n) {
-      const std::string name = n <= 4 ? "G5" + std::to_string(n + 3) : "G5" + std::string(n < 10 ? "0" : "") + std::to_string(n);
+      const std::string name =
+          n <= 4 ? "G5" + std::to_string(n + 3) : "G5" + std::string(n < 10 ? "0" : "") + std::to_string(n);
       const std::string key = "$P_UIFR[" + std::to_string(n) + ",";
       Eigen::Vector3d offset = Eigen::Vector3d::Zero(), rotation = Eigen::Vector3d::Zero();
       bool has_offset = false, has_rotation = false;
@@ -437,14 +466,16 @@ class Importer {
       ++out_.kept;
     }
     if (texts)
-      out_.notes.push_back(std::to_string(texts) + " text data (axis names and the like) used for the axis set-up only; machine_data holds numbers");
+      out_.notes.push_back(
+          std::to_string(texts) +
+          " text data (axis names and the like) used for the axis set-up only; machine_data holds numbers");
   }
 
   MachineDataImport& out_;
-  std::map<std::string, Slot> slots_;            // "$MA_MAX_AX_VELO[0,#3]" -> datum
+  std::map<std::string, Slot> slots_;              // "$MA_MAX_AX_VELO[0,#3]" -> datum
   std::map<int, std::string> machine_axis_names_;  // machine axis number -> MD10000 name
   std::set<int> axes_seen_;
-  std::map<int, int> channel_machine_axis_;      // channel axis -> machine axis (MD20070)
+  std::map<int, int> channel_machine_axis_;       // channel axis -> machine axis (MD20070)
   std::array<int, 3> geo_channel_axis_{1, 2, 3};  // geometry axis -> channel axis (MD20050)
   std::set<int> spindle_axes_;
   int master_spindle_ = 1;

@@ -60,8 +60,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kNames{{
 }};
 
 // Unit suffixes written by profile_to_json, longest first.
-constexpr std::array<std::string_view, 10> kUnitSuffixes{"_mm_min", "_deg_min", "_m_s2", "_deg_s2", "_m_s3",
-                                                         "_deg_s3", "_mm", "_deg", "_ms", "_s"};
+constexpr std::array<std::string_view, 10> kUnitSuffixes{
+    "_mm_min", "_deg_min", "_m_s2", "_deg_s2", "_m_s3", "_deg_s3", "_mm", "_deg", "_ms", "_s"};
 
 void flatten(const nlohmann::ordered_json& node, const std::string& path,
              std::vector<std::pair<std::string, std::string>>& rows) {

@@ -25,7 +25,8 @@ fs::path fresh_folder() {
 
 TEST(ProfileCommand, ImportWritesProfileAndSourcesAndReportsMissing) {
   const fs::path dir = fresh_folder();
-  const CliRun r = run_shell(drycut_command("profile import '" + kMdFile + "' -o '" + (dir / "mill.json").string() + "'"));
+  const CliRun r =
+      run_shell(drycut_command("profile import '" + kMdFile + "' -o '" + (dir / "mill.json").string() + "'"));
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(fs::exists(dir / "mill.json"));
   EXPECT_TRUE(fs::exists(dir / "mill.sources.json"));

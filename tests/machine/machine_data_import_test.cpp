@@ -29,7 +29,8 @@ MachineDataImport import_text(const std::string& md) {
 }
 
 bool any_contains(const std::vector<std::string>& lines, const std::string& part) {
-  return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(part) != std::string::npos; });
+  return std::any_of(lines.begin(), lines.end(),
+                     [&](const std::string& l) { return l.find(part) != std::string::npos; });
 }
 
 TEST(MachineDataFile, LineFormsOfTheControl) {
@@ -39,7 +40,7 @@ TEST(MachineDataFile, LineFormsOfTheControl) {
       "N32000 $MA_MAX_AX_VELO[AX1]=30000 '5A3C\n"  // MD number in front, line checksum behind
       "$ma_max_ax_accel[0,x1] = 2.5 ; comment\n"   // lower case, blanks, comment
       "$MA_MISC_FUNCTION_MASK[AX4]='H1C'\n"        // hex: 0x1C = 28
-      "$MA_FOO[AX4]='B101'\n"                       // binary: 5
+      "$MA_FOO[AX4]='B101'\n"                      // binary: 5
       "$MN_AXCONF_MACHAX_NAME_TAB[0]=\"X1\"\n"
       "$MA_IS_ROT_AX[AX4]=TRUE\n"
       "CHANDATA(2)\n$MC_CUTCOM_MAXNUM_CHECK_BLOCKS=9\n"
@@ -89,20 +90,20 @@ TEST(MachineDataImport, RotaryModuloAxisFromRevolutions) {
   EXPECT_TRUE(c.rotary);
   EXPECT_TRUE(c.modulo);
   EXPECT_DOUBLE_EQ(c.modulo_range, 360.0);
-  EXPECT_EQ(c.misc_function_mask, 4);                  // 'H4'
-  EXPECT_DOUBLE_EQ(c.max_velocity_mm_s, 25.0 * 360 / 60);  // 25 rev/min = 9000 deg/min = 150 deg/s
-  EXPECT_DOUBLE_EQ(c.max_accel_mm_s2, 1.5 * 360);          // 1.5 rev/s² = 540 deg/s²
-  EXPECT_DOUBLE_EQ(c.max_jerk_mm_s3, 50.0 * 360);          // 50 rev/s³ = 18000 deg/s³
-  EXPECT_DOUBLE_EQ(c.pos_velocity_mm_s, 20.0 * 360 / 60);  // 20 rev/min = 7200 deg/min
+  EXPECT_EQ(c.misc_function_mask, 4);                           // 'H4'
+  EXPECT_DOUBLE_EQ(c.max_velocity_mm_s, 25.0 * 360 / 60);       // 25 rev/min = 9000 deg/min = 150 deg/s
+  EXPECT_DOUBLE_EQ(c.max_accel_mm_s2, 1.5 * 360);               // 1.5 rev/s² = 540 deg/s²
+  EXPECT_DOUBLE_EQ(c.max_jerk_mm_s3, 50.0 * 360);               // 50 rev/s³ = 18000 deg/s³
+  EXPECT_DOUBLE_EQ(c.pos_velocity_mm_s, 20.0 * 360 / 60);       // 20 rev/min = 7200 deg/min
   EXPECT_DOUBLE_EQ(c.transition_jerk_mm_s3, c.max_jerk_mm_s3);  // MD32432 missing: = jerk
 }
 
 TEST(MachineDataImport, PathChannelAndSpindleData) {
   const MachineProfile p = import_test_file().profile;
-  EXPECT_NEAR(p.ipo_cycle_s, 0.006, 1e-15);           // MD10050 0.002 s × MD10070 3
-  EXPECT_DOUBLE_EQ(p.max_accel_ovl_factor, 1.15);     // smallest of X 1.2, Y 1.2, Z 1.15
-  EXPECT_DOUBLE_EQ(p.path_jerk_mm_s3, 30000.0);       // MD20600[0] 30 m/s³
-  EXPECT_EQ(p.cutcom_maxnum_check_blocks, 4);         // channel 1's 4, not channel 2's 9
+  EXPECT_NEAR(p.ipo_cycle_s, 0.006, 1e-15);        // MD10050 0.002 s × MD10070 3
+  EXPECT_DOUBLE_EQ(p.max_accel_ovl_factor, 1.15);  // smallest of X 1.2, Y 1.2, Z 1.15
+  EXPECT_DOUBLE_EQ(p.path_jerk_mm_s3, 30000.0);    // MD20600[0] 30 m/s³
+  EXPECT_EQ(p.cutcom_maxnum_check_blocks, 4);      // channel 1's 4, not channel 2's 9
   EXPECT_DOUBLE_EQ(p.circle_error_const_mm, 0.02);
   EXPECT_FALSE(p.base_unit_inch);
   EXPECT_EQ(p.tool_change_mode, 1);
@@ -144,7 +145,8 @@ TEST(MachineDataImport, SourcesNameTheDatumAndLine) {
 
 TEST(MachineDataImport, MissingValuesAreReportedWithTheirDefault) {
   const MachineDataImport r = import_test_file();
-  EXPECT_TRUE(any_contains(r.missing, "MD20602 CURV_EFFECT_ON_PATH_ACCEL (path.curv_effect_on_path_accel): not in the files, default 0.75"));
+  EXPECT_TRUE(any_contains(
+      r.missing, "MD20602 CURV_EFFECT_ON_PATH_ACCEL (path.curv_effect_on_path_accel): not in the files, default 0.75"));
   EXPECT_TRUE(any_contains(r.missing, "axis X (machine axis AX1) MD32060 POS_AX_VELO"));
   EXPECT_TRUE(any_contains(r.missing, "axis C (machine axis AX4) MD32432 PATH_TRANS_JERK_LIM"));
   EXPECT_FALSE(any_contains(r.missing, "MAX_AX_VELO"));
@@ -159,9 +161,12 @@ TEST(MachineDataImport, RequiredAxisValuesMissingTakeTheFallback) {
   EXPECT_DOUBLE_EQ(r.profile.axes[0].max_velocity_mm_s, 200.0);  // 12000 mm/min
   EXPECT_DOUBLE_EQ(r.profile.axes[1].max_velocity_mm_s, 10000.0 / 60);
   EXPECT_DOUBLE_EQ(r.profile.axes[0].max_accel_mm_s2, 1000.0);  // 1 m/s²
-  EXPECT_TRUE(any_contains(r.missing, "axis Y (machine axis AX2) MD32000 MAX_AX_VELO (axes.Y.max_velocity_mm_min): not in the files, default 10000 mm/min"));
+  EXPECT_TRUE(any_contains(r.missing,
+                           "axis Y (machine axis AX2) MD32000 MAX_AX_VELO (axes.Y.max_velocity_mm_min): not in the "
+                           "files, default 10000 mm/min"));
   EXPECT_TRUE(any_contains(r.missing, "axis X (machine axis AX1) MD32300 MAX_AX_ACCEL"));
-  EXPECT_TRUE(any_contains(r.missing, "MD10050 SYSCLOCK_CYCLE_TIME MD10070 IPO_SYSCLOCK_TIME_RATIO not in the files, default 4 ms"));
+  EXPECT_TRUE(any_contains(
+      r.missing, "MD10050 SYSCLOCK_CYCLE_TIME MD10070 IPO_SYSCLOCK_TIME_RATIO not in the files, default 4 ms"));
   EXPECT_TRUE(any_contains(r.missing, "MD20070 $MC_AXCONF_MACHAX_USED"));
   EXPECT_DOUBLE_EQ(r.profile.ipo_cycle_s, 0.004);
 }
@@ -209,9 +214,10 @@ TEST(MachineDataImport, InvalidValuesFailTheProfileValidation) {
 TEST(MachineDataImport, HostileInputNeverCrashes) {
   // Out-of-range numbers for counts and masks, NaN and infinity, unclosed brackets and strings,
   // binary bytes: the import refuses values or reports lines, it never converts out of range.
-  std::string garbage = "$MC_AXCONF_MACHAX_USED[0]=1e300\n$MC_SPIND_DEF_MASTER_SPIND=-1e300\n"
-                        "$MA_MISC_FUNCTION_MASK[AX1]=1e40\n$MA_MAX_AX_VELO[AX1]=nan\n$MA_MAX_AX_VELO[AX2]=inf\n"
-                        "$MA_MAX_AX_VELO[AX99999999999]=5\n$MA_X[AX1=1\n$MN_Y=\"open\n'HFFFFFFFFFFFFFFFFFFFF'\n";
+  std::string garbage =
+      "$MC_AXCONF_MACHAX_USED[0]=1e300\n$MC_SPIND_DEF_MASTER_SPIND=-1e300\n"
+      "$MA_MISC_FUNCTION_MASK[AX1]=1e40\n$MA_MAX_AX_VELO[AX1]=nan\n$MA_MAX_AX_VELO[AX2]=inf\n"
+      "$MA_MAX_AX_VELO[AX99999999999]=5\n$MA_X[AX1=1\n$MN_Y=\"open\n'HFFFFFFFFFFFFFFFFFFFF'\n";
   garbage += std::string("\0\x01\xff$\n$_=1\n$MN_=2\nCHANDATA(1e9)\n", 28);
   MachineDataText text;
   parse_machine_data_text(garbage, "g.txt", text);
