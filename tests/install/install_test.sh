@@ -52,4 +52,11 @@ grep -q "time" <<<"$out" || fail "no summary: $out"
 # The drill move is there: the path reaches Z-10.
 (cd "$work/job" && "$prefix/bin/drycut" path DRILL.MPF --elements 2>&1) | grep -q -- "-10.000)" ||
   fail "the cycle's drill move is missing"
+# The installed bash completion offers the subcommands and a subcommand's options.
+completion="$(PATH="$prefix/bin:$PATH" bash -c '
+  source "$1"
+  COMP_WORDS=(drycut prof); COMP_CWORD=1; _drycut; echo "${COMPREPLY[*]}"
+  COMP_WORDS=(drycut profile import --o); COMP_CWORD=3; _drycut; echo "${COMPREPLY[*]}"' _ \
+  "$prefix/share/bash-completion/completions/drycut")"
+[[ "$completion" == $'profile\n--output' ]] || fail "bash completion: $completion"
 echo "install ok"
