@@ -66,6 +66,8 @@ class Importer {
     read_spindle();
     read_reset_gcodes();
     read_settable_frames();
+    read_tools();
+    read_swivel_kinematics();
     keep_the_rest();
   }
 
@@ -436,6 +438,76 @@ class Importer {
       }
       if (has_offset) p.work_offsets[name] = offset;
       if (has_rotation) p.work_offset_rotations_deg[name] = rotation;
+    }
+  }
+
+  // Tool offsets as the tool data backup writes them: $TC_DP3[t,d] length 1 and $TC_DP6[t,d]
+  // radius of edge d of tool t, each plus its wear value ($TC_DP12, $TC_DP15), which the control
+  // adds; $TC_TP2[t] the tool's name (else its number). Edges 1..12 as the profile takes them.
+  void read_tools() {
+    struct Edge {
+      double length = 0, radius = 0;
+      const MachineDatum *length_from = nullptr, *radius_from = nullptr;
+    };
+    std::map<int, std::map<int, Edge>> tools;
+    for (auto& [key, slot] : slots_) {
+      const MachineDatum& d = *slot.datum;
+      const double* v = std::get_if<double>(&d.value);
+      if (d.area != "TC" || !v || d.index.size() != 2 || !all_digits(d.index[0]) || !all_digits(d.index[1])) continue;
+      const bool length = d.name == "DP3" || d.name == "DP12", radius = d.name == "DP6" || d.name == "DP15";
+      const int t = std::stoi(d.index[0]), e = std::stoi(d.index[1]);
+      if ((!length && !radius) || t > 32000 || e < 1 || e > 12) continue;
+      Edge& edge = tools[t][e];
+      (length ? edge.length : edge.radius) += *v;
+      if (d.name == "DP3") edge.length_from = &d;
+      if (d.name == "DP6") edge.radius_from = &d;
+      slot.used = true;
+    }
+    std::set<std::string> names;
+    for (const auto& [t, edges] : tools) {
+      Tool tool;
+      tool.number = t;
+      const std::string tool_key = "tools[" + std::to_string(out_.profile.tools.size()) + "].";
+      tool.name = text_of("$TC_TP2[" + std::to_string(t) + "]").value_or(std::to_string(t));
+      if (const MachineDatum* n = peek("$TC_TP2[" + std::to_string(t) + "]"))
+        out_.sources[tool_key + "name"] = {written_name(*n), n->location()};
+      if (!names.insert(tool.name).second) {
+        out_.notes.push_back("tool " + std::to_string(t) + ": name '" + tool.name + "' used twice, named '" +
+                             tool.name + "_T" + std::to_string(t) + "' in the profile");
+        tool.name += "_T" + std::to_string(t);
+      }
+      const std::string k = tool_key + "edges[";
+      for (const auto& [d, edge] : edges) {
+        const std::string e = k + std::to_string(tool.edges.size()) + "].";
+        if (edge.length_from)
+          out_.sources[e + "length_mm"] = {written_name(*edge.length_from), edge.length_from->location()};
+        if (edge.radius_from)
+          out_.sources[e + "radius_mm"] = {written_name(*edge.radius_from), edge.radius_from->location()};
+        if (const MachineDatum* from = edge.length_from ? edge.length_from : edge.radius_from) {
+          out_.sources[e + "d"] = {written_name(*from), from->location()};
+          out_.sources[tool_key + "number"] = {written_name(*from), from->location()};
+        }
+        tool.edges.push_back({d, edge.radius, edge.length});
+      }
+      out_.profile.tools.push_back(tool);
+    }
+  }
+
+  // $TC_CARR23 of the first tool carrier: T the table turns, P the head turns (M, mixed, is not modelled).
+  void read_swivel_kinematics() {
+    for (int n = 1; n <= 99; ++n) {
+      const MachineDatum* d = peek("$TC_CARR23[" + std::to_string(n) + "]");
+      const std::string* kind = d ? std::get_if<std::string>(&d->value) : nullptr;
+      if (!kind) continue;
+      const std::string k = upper_text(*kind);
+      if (k == "T" || k == "P") {
+        out_.profile.swivel_kinematics = k == "T" ? "table" : "head";
+        out_.sources["program.swivel_kinematics"] = {written_name(*d), d->location()};
+      } else {
+        out_.notes.push_back(written_name(*d) + " = \"" + *kind +
+                             "\": kinematic type not modelled, swivel data not imported");
+      }
+      return;
     }
   }
 

@@ -130,6 +130,28 @@ TEST(MachineDataImport, SettableFramesFromTheFrameBackup) {
   EXPECT_EQ(r.sources.at("program.work_offset_rotations_deg.G55").origin, kFile + ":97");
 }
 
+TEST(MachineDataImport, ToolOffsetsAndSwivelTypeFromTheToolData) {
+  const MachineDataImport r = import_test_file();
+  const MachineProfile& p = r.profile;
+  ASSERT_EQ(p.tools.size(), 2u);
+  const Tool* mill = p.find_tool("FR_10");
+  ASSERT_NE(mill, nullptr);
+  EXPECT_EQ(mill->number, 1);
+  ASSERT_EQ(mill->edges.size(), 2u);
+  // Geometry plus wear: length 92.5 - 0.02, radius 5 - 0.01.
+  EXPECT_NEAR(mill->edges[0].length_mm, 92.48, 1e-12);
+  EXPECT_NEAR(mill->edges[0].radius_mm, 4.99, 1e-12);
+  EXPECT_EQ(mill->edges[1].d, 2);
+  EXPECT_DOUBLE_EQ(mill->edges[1].radius_mm, 4.5);
+  const Tool* drill = p.find_tool(7);
+  ASSERT_NE(drill, nullptr);
+  EXPECT_EQ(drill->name, "DRILL_8");
+  EXPECT_DOUBLE_EQ(drill->edges.at(0).length_mm, 120.0);
+  EXPECT_EQ(p.swivel_kinematics, "table");  // $TC_CARR23[1] = "T"
+  EXPECT_DOUBLE_EQ(p.machine_data.at("$TC_DP1[1,1]"), 120.0);  // tool type: kept
+  EXPECT_EQ(r.sources.at("tools[0].edges[0].length_mm").origin, kFile + ":104");
+}
+
 TEST(MachineDataImport, SourcesNameTheDatumAndLine) {
   const MachineDataImport r = import_test_file();
   const ValueSource& v = r.sources.at("axes.X.max_velocity_mm_min");
