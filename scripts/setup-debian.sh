@@ -6,7 +6,8 @@ set -euo pipefail
 packages=(cmake ninja-build g++ pkg-config
           libeigen3-dev nlohmann-json3-dev libspdlog-dev libfmt-dev libcli11-dev
           libgtest-dev libgmock-dev libbenchmark-dev
-          libjs-three)  # three.js, inlined into the HTML report for its 3D view
+          libjs-three   # three.js, inlined into the HTML report for its 3D view
+          help2man dpkg-dev)  # man page from --help; dpkg-shlibdeps for the .deb (CPack)
 if [[ "${1:-}" == "--with-browser" ]]; then
   packages+=(chromium)
 fi

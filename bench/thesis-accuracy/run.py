@@ -51,7 +51,7 @@ def main():
             print(f"| {family}_{number} | {method} | {sub_bytes} | {main_bytes} | {fmt(all_max)} "
                   f"| {fmt(bottom['programmed']['max_mm'] if bottom else None)} | {fmt(r and r['control_point_mae_mm'])} "
                   f"| {fmt(cut and cut['max_mm'])} | {fmt(cut and cut['deepest_gouge_mm'])} "
-                  f"| {fmt(r and r['tool_cut_control_point_mae_mm'])} | {'; '.join(r['alarms']) if r else 'exit ' + str(code)} |")
+                  f"| {fmt(r and r['tool_cut_control_point_mae_mm'])} | {'; '.join(a.replace(ROOT + os.sep, '') for a in r['alarms']) if r else 'exit ' + str(code)} |")
     print()
     sys.stdout.flush()
     with tempfile.NamedTemporaryFile(suffix=".json") as out:

@@ -17,5 +17,6 @@ void register_report(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_experiment(CLI::App& app);
 void register_regress(CLI::App& app);
+void register_profile(CLI::App& app);
 
 }  // namespace drycut::app

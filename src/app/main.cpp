@@ -4,14 +4,18 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "drycut_version.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"drycut: dry-run SINUMERIK 840D part programs before cutting metal"};
+  // The name is fixed so help texts (and the man page made from them) never show a build path.
+  CLI::App app{"drycut: dry-run SINUMERIK 840D part programs before cutting metal", "drycut"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "drycut 0.1.0");
+  // Version and the git description of the tree it was built from ("unknown" without git).
+  app.set_version_flag("--version", std::string("drycut ") + kDrycutVersion + " (" + kDrycutGitDescription + ")");
   int verbosity = 0;
   app.add_flag("-v,--verbose", verbosity, "More log output (-v info, -vv debug)");
   app.parse_complete_callback([&] {
@@ -31,6 +35,7 @@ int main(int argc, char** argv) {
   drycut::app::register_deviation(app);
   drycut::app::register_sweep(app);
   drycut::app::register_language(app);
+  drycut::app::register_profile(app);
 
   try {
     app.parse(argc, argv);

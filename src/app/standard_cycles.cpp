@@ -3,6 +3,12 @@
 #include <string>
 #include <system_error>
 
+// Set by CMake: the installed cycles folder relative to the installed binary's folder
+// (CMAKE_INSTALL_DATADIR/drycut/cycles seen from CMAKE_INSTALL_BINDIR).
+#ifndef DRYCUT_INSTALLED_CYCLES_RELATIVE
+#define DRYCUT_INSTALLED_CYCLES_RELATIVE "../share/drycut/cycles"
+#endif
+
 namespace drycut::app {
 namespace {
 
@@ -23,13 +29,10 @@ std::filesystem::path binary_folder() {
 
 std::optional<std::filesystem::path> standard_cycles_folder() {
   const auto bin = binary_folder();
-  if (!bin.empty()) {
-    if (is_folder(bin / "cycles")) return bin / "cycles";
-    if (is_folder(bin / ".." / "share" / "drycut" / "cycles")) return (bin / ".." / "share" / "drycut" / "cycles").lexically_normal();
-  }
-#ifdef DRYCUT_SOURCE_CYCLES_DIR
-  if (is_folder(DRYCUT_SOURCE_CYCLES_DIR)) return std::filesystem::path(DRYCUT_SOURCE_CYCLES_DIR);
-#endif
+  if (bin.empty()) return std::nullopt;
+  if (is_folder(bin / "cycles")) return bin / "cycles";
+  const auto installed = (bin / DRYCUT_INSTALLED_CYCLES_RELATIVE).lexically_normal();
+  if (is_folder(installed)) return installed;
   return std::nullopt;
 }
 

@@ -3,9 +3,11 @@
 // programs/cycles, installed beside the binary. They are searched after the user's folders, so a
 // machine's own cycle (e.g. from a controller archive) with the same name is used instead.
 //
-// Lookup order: <bindir>/cycles (the build tree, where CMake copies them), then
-// <bindir>/../share/drycut/cycles (an installed drycut), then the source tree's programs/cycles
-// (DRYCUT_SOURCE_CYCLES_DIR, a compile definition). The first folder that exists wins.
+// Lookup order: <bindir>/cycles (the build tree, where CMake copies them on every build), then
+// the installed folder <bindir>/<relative path> (DRYCUT_INSTALLED_CYCLES_RELATIVE, set by CMake
+// from the install directories: ../share/drycut/cycles by default). The first folder that exists
+// wins. No absolute path is compiled in, so an installed or packaged drycut never reads the build
+// machine's source tree.
 #include <filesystem>
 #include <optional>
 #include <string>

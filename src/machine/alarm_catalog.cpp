@@ -9,7 +9,7 @@ namespace {
 using S = Severity;
 using A = AlarmSource;
 
-// Sorted by number. Texts are paraphrased; numbers per sinumerik-facts.md §5.
+// Sorted by number. Texts are paraphrased; numbers per docs/sinumerik-facts.md §5.
 constexpr std::array kCatalog{
     AlarmInfo{10720, S::Alarm, "Software limit switch violated", A::Memory},
     AlarmInfo{10750, S::Alarm, "Tool radius compensation activated without tool number", A::Memory},

@@ -1,0 +1,116 @@
+#include "machine/profile_md_names.hpp"
+
+#include <array>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+namespace drycut::machine {
+namespace {
+
+// Last key component (without unit) -> datum; axis keys and others share one table because the
+// component names never collide. docs/machine-profile.md is the reference for every row.
+constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kNames{{
+    {"min", "MD36100 POS_LIMIT_MINUS"},
+    {"max", "MD36110 POS_LIMIT_PLUS"},
+    {"max_velocity", "MD32000 MAX_AX_VELO"},
+    {"max_accel", "MD32300 MAX_AX_ACCEL"},
+    {"max_jerk", "MD32431 MAX_AX_JERK"},
+    {"transition_jerk", "MD32432 PATH_TRANS_JERK_LIM"},
+    {"pos_velocity", "MD32060 POS_AX_VELO"},
+    {"rotary", "MD30300 IS_ROT_AX"},
+    {"modulo", "MD30310 ROT_IS_MODULO"},
+    {"modulo_range", "MD30330 MODULO_RANGE"},
+    {"misc_function_mask", "MD30455 MISC_FUNCTION_MASK"},
+    {"ipo_cycle", "MD10050 SYSCLOCK_CYCLE_TIME x MD10070 IPO_SYSCLOCK_TIME_RATIO"},
+    {"max_accel_ovl_factor", "MD32310 MAX_ACCEL_OVL_FACTOR"},
+    {"max_path_jerk", "MD20600 MAX_PATH_JERK"},
+    {"soft_accel_factor", "MD32433 SOFT_ACCEL_FACTOR"},
+    {"curv_effect_on_path_accel", "MD20602 CURV_EFFECT_ON_PATH_ACCEL"},
+    {"lookahead_blocks", "- (bounded by MD28060 MM_IPO_BUFFER_SIZE)"},
+    {"short_block_factor", "- (short-block rule)"},
+    {"g0_accel_factor", "MD32434 G00_ACCEL_FACTOR"},
+    {"g0_jerk_factor", "MD32435 G00_JERK_FACTOR"},
+    {"tool_change_time", "- (machine specific)"},
+    {"spindle_ramp_time", "- (from MD35200/35210)"},
+    {"max_spindle_speed_rpm", "MD35100 SPIND_VELO_LIMIT"},
+    {"spindle_posctrl_velo_rpm", "MD35300 SPIND_POSCTRL_VELO"},
+    {"spindle_posctrl_accel_rev_s2", "MD35210 GEAR_STEP_POSCTRL_ACCEL"},
+    {"spindle_speedctrl_accel_rev_s2", "MD35200 GEAR_STEP_SPEEDCTRL_ACCEL"},
+    {"reset_gcodes", "MD20150 GCODE_RESET_VALUES"},
+    {"work_offsets", "$P_UIFR (settable frames)"},
+    {"work_offset_rotations", "$P_UIFR rotations"},
+    {"start_position", "-"},
+    {"circle_error_const", "MD21000 CIRCLE_ERROR_CONST"},
+    {"circle_error_factor", "MD21010 CIRCLE_ERROR_FACTOR"},
+    {"cutcom_decel_limit", "SD42528 CUTCOM_DECEL_LIMIT"},
+    {"cubic_spline_blocks", "MD20160 CUBIC_SPLINE_BLOCKS"},
+    {"cubic_spline_global", "- (drycut option)"},
+    {"cutcom_maxnum_check_blocks", "MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS"},
+    {"cutcom_maxnum_dummy_blocks", "MD20250 CUTCOM_MAXNUM_DUMMY_BLOCKS"},
+    {"tool_change_mode", "MD22550 TOOL_CHANGE_MODE"},
+    {"tool_change_m_code", "MD22560 TOOL_CHANGE_M_CODE"},
+    {"cutting_edge_default", "MD20270 CUTTING_EDGE_DEFAULT"},
+    {"tool_table_complete", "- (drycut)"},
+    {"swivel_kinematics", "$TC_CARR23"},
+    {"base_unit", "MD10240 SCALING_SYSTEM_IS_METRIC"},
+    {"radius", "$TC_DP6 (tool radius)"},
+    {"length", "$TC_DP3 (tool length 1)"},
+    {"tools", "tool offsets $TC_DP"},
+}};
+
+// Unit suffixes written by profile_to_json, longest first.
+constexpr std::array<std::string_view, 10> kUnitSuffixes{
+    "_mm_min", "_deg_min", "_m_s2", "_deg_s2", "_m_s3", "_deg_s3", "_mm", "_deg", "_ms", "_s"};
+
+void flatten(const nlohmann::ordered_json& node, const std::string& path,
+             std::vector<std::pair<std::string, std::string>>& rows) {
+  if (node.is_object() && !node.empty()) {
+    for (auto it = node.begin(); it != node.end(); ++it)
+      flatten(it.value(), path.empty() ? it.key() : path + "." + it.key(), rows);
+    return;
+  }
+  if (node.is_array() && !node.empty() && node.front().is_object()) {
+    for (size_t i = 0; i < node.size(); ++i) flatten(node[i], path + "[" + std::to_string(i) + "]", rows);
+    return;
+  }
+  rows.emplace_back(path, node.dump());
+}
+
+// The datum of one key component, with or without its unit suffix; empty when none.
+std::string_view name_of_component(std::string_view last) {
+  for (auto [stem, md] : kNames)
+    if (last == stem) return md;
+  for (std::string_view suffix : kUnitSuffixes) {
+    if (last.size() > suffix.size() && last.ends_with(suffix)) {
+      const std::string_view stem = last.substr(0, last.size() - suffix.size());
+      for (auto [name, md] : kNames)
+        if (stem == name) return md;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> flatten_profile_json(const std::string& json_text) {
+  std::vector<std::pair<std::string, std::string>> rows;
+  flatten(nlohmann::ordered_json::parse(json_text), "", rows);
+  return rows;
+}
+
+std::string md_name_of(std::string_view key_path) {
+  if (key_path.starts_with("machine_data.")) return std::string(key_path.substr(13));
+  // The innermost key component that names a datum ("program.work_offsets_mm.G54" -> work_offsets).
+  while (!key_path.empty()) {
+    const size_t dot = key_path.rfind('.');
+    std::string_view last = key_path.substr(dot == std::string_view::npos ? 0 : dot + 1);
+    last = last.substr(0, last.find('['));
+    if (auto md = name_of_component(last); !md.empty()) return std::string(md);
+    if (dot == std::string_view::npos) break;
+    key_path = key_path.substr(0, dot);
+  }
+  return "-";
+}
+
+}  // namespace drycut::machine
