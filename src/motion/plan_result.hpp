@@ -70,6 +70,9 @@ struct PlannerOptions {
   bool emit_samples = false;  // IPO-cycle samples to observer.on_sample
   double dip_threshold = 0.8; // a dip: velocity below this share of the programmed F
   size_t max_dips = 1000;
+  // > 0: cut every curved element into equal segments of at most this length (mm) instead of
+  // the adaptive rule of element_discretisation.hpp; a fine-segment reference for tests.
+  double reference_segment_mm = 0;
 };
 
 }  // namespace drycut::motion

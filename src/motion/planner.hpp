@@ -60,12 +60,15 @@
 // a limit, the opposite ramp or a block transition the acceleration may step (jerk is not
 // checked, and PATH_TRANS_JERK_LIM at curvature steps is not modelled).
 #include <deque>
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include "interp/path_element.hpp"
 #include "machine/machine_profile.hpp"
+#include "motion/element_discretisation.hpp"
 #include "motion/element_dynamics.hpp"
+#include "motion/envelope_segment.hpp"
 #include "motion/feed_dip_collector.hpp"
 #include "motion/path_constraints.hpp"
 #include "motion/plan_result.hpp"
@@ -105,6 +108,7 @@ class Planner : public interp::ElementSink {
     double s_start = 0;  // arc length in the element where the segment starts
     double cap = 0;
     RampLimits ramp;
+    bool envelope = false;  // timed along the ramp envelope (envelope_segment.hpp)
   };
   struct WindowElement {
     interp::PathElement element;
@@ -118,7 +122,8 @@ class Planner : public interp::ElementSink {
   void commit_front();
   void flush();
   void account_pause(const interp::PathElement& element, double duration);
-  void emit_samples(const WindowElement& e, const Segment& seg, const SegmentProfile& profile);
+  void emit_samples(const WindowElement& e, const Segment& seg, double duration,
+                    const std::function<ProfileState(double)>& state_at);
   void emit_rest_samples(const interp::PathElement& element, double duration);
   void validate(const interp::PathElement& element) const;
   static double extend(RampAnchor& anchor, double v_here, const Segment& seg);
@@ -128,6 +133,8 @@ class Planner : public interp::ElementSink {
   PlannerOptions options_;
   std::vector<std::unique_ptr<PointConstraint>> point_constraints_;
   std::vector<std::unique_ptr<JunctionConstraint>> junction_constraints_;
+  DiscretisationRule discretisation_;
+  std::vector<Station> stations_;  // reused by append_motion
 
   std::deque<WindowElement> elements_;
   std::deque<Node> nodes_;
