@@ -1,9 +1,8 @@
 #include "motion/element_discretisation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -14,7 +13,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxDepth = 24;
-constexpr double kInfSpread = std::numeric_limits<double>::infinity();
 
 // Angles β + k·period (k integer) strictly inside the sweep, as arc lengths.
 void add_periodic(double beta, double period, double phi0, double sweep, double speed, std::vector<double>& out) {
@@ -46,22 +44,74 @@ void arc_critical_lengths(const geometry::ArcCurve& arc, double length, std::vec
   }
 }
 
-double spread(double a, double b, double c) {
-  if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c)) {
-    // Infinite on all three: no limit. Mixed: a limit appears on part of the piece.
-    return (std::isinf(a) && std::isinf(b) && std::isinf(c)) ? 0.0 : kInfSpread;
-  }
-  const double lo = std::min({a, b, c}), hi = std::max({a, b, c});
-  return lo > 0 ? hi / lo - 1.0 : (hi > 0 ? kInfSpread : 0.0);
+
+// True when some β + k·period lies strictly inside (lo, hi).
+bool angle_inside(double beta, double period, double lo, double hi) {
+  const double phi = beta + std::ceil((lo - beta) / period) * period;
+  return phi > lo && phi < hi;
 }
 
-bool constant_bound(const VelocityBound& b) { return b.limit == Limit::Feed || b.limit == Limit::ShortBlock; }
+// True when `worst` is within `tolerance` of the better end (the piece's limit hardly varies).
+bool close_to(double worst, double a, double b, double tolerance) {
+  const double best = std::max(a, b);
+  if (!std::isfinite(best)) return !std::isfinite(worst);
+  return worst >= best * (1.0 - tolerance);
+}
 
-struct Refiner {
-  const DiscretisationRule& rule;
-  const StationEvaluator& evaluate;
+struct ArcRefiner {
+  const geometry::ArcCurve& arc;
   double length;
+  const DiscretisationRule& rule;
+  const PointLimits& limits_at;
+  std::vector<double>& critical;  // ascending arc lengths, filled on the first split
   std::vector<Station>& out;
+  bool critical_known = false;
+  std::array<double, 3> axis_radius{}, axis_phase{};  // R_i and α_i
+
+  void prepare() {
+    for (int i = 0; i < 3; ++i) {
+      const auto k = static_cast<size_t>(i);
+      axis_radius[k] = std::hypot(arc.first_axis()[i], arc.second_axis()[i]);
+      axis_phase[k] = std::atan2(arc.second_axis()[i], arc.first_axis()[i]);
+    }
+  }
+
+  Station station(double s) const {
+    Station st = limits_at(arc.at(s));
+    st.s = s;
+    return st;
+  }
+
+  double angle(double s) const { return arc.start_angle() + (arc.sweep() > 0 ? s : -s) * std::abs(arc.sweep()) / length; }
+
+  // Per axis the largest |t_i|, |κ_i| and |d³P/ds³_i| over [a, b]: at an end or at an interior
+  // extreme of radial_i / along_i (see the header). Every point constraint is a minimum over
+  // axes of a function falling in these, so the limits of this point are the worst case.
+  CurvePoint worst_point(const Station& a, const Station& b) const {
+    CurvePoint w = a.point;
+    const double lo = std::min(angle(a.s), angle(b.s)), hi = std::max(angle(a.s), angle(b.s));
+    const double r = arc.radius(), speed = length / std::abs(arc.sweep());
+    const double pitch = arc.axial_travel() / arc.sweep();
+    const Vec3 n = arc.normal();
+    for (int i = 0; i < 3; ++i) {
+      double t = std::max(std::abs(a.point.tangent[i]), std::abs(b.point.tangent[i]));
+      double k = std::max(std::abs(a.point.curvature_vector[i]), std::abs(b.point.curvature_vector[i]));
+      double rate = std::max(std::abs(a.point.curvature_rate[i]), std::abs(b.point.curvature_rate[i]));
+      const double r_i = axis_radius[static_cast<size_t>(i)];
+      if (r_i > 1e-12) {
+        const double alpha = axis_phase[static_cast<size_t>(i)];
+        if (angle_inside(alpha, kPi, lo, hi)) k = r * r_i / (speed * speed);
+        if (angle_inside(alpha + kPi / 2, kPi, lo, hi)) rate = r * r_i / (speed * speed * speed);
+        // along_i = -R_i at α + π/2, +R_i at α + 3π/2: t_i = (r·along_i + p·n_i)/speed there.
+        if (angle_inside(alpha + kPi / 2, 2 * kPi, lo, hi)) t = std::max(t, std::abs(-r * r_i + pitch * n[i]) / speed);
+        if (angle_inside(alpha + 3 * kPi / 2, 2 * kPi, lo, hi)) t = std::max(t, std::abs(r * r_i + pitch * n[i]) / speed);
+      }
+      w.tangent[i] = t;
+      w.curvature_vector[i] = k;
+      w.curvature_rate[i] = rate;
+    }
+    return w;
+  }
 
   // The ramp limits matter on [a, b] only where a ramp can run: within the distance of a ramp
   // from rest to the bound of the element's ends (junction dips, stops), and the acceleration
@@ -76,70 +126,87 @@ struct Refiner {
 
   bool accel_can_bind(const Station& a, const Station& b) const {
     const double v = std::max(a.bound.velocity, b.bound.velocity);
-    const double accel = std::min(a.ramp.accel, b.ramp.accel);
     const double jerk = std::max(a.ramp.jerk, b.ramp.jerk);
+    const double accel = std::min(a.ramp.accel, b.ramp.accel);
     return !std::isfinite(jerk) || v > accel * accel / jerk;
   }
 
+  bool acceptable(const Station& a, const Station& b, const Station& w) const {
+    if (!close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance)) return false;
+    if (!ramp_matters(a, b)) return true;
+    if (!close_to(w.ramp.jerk, a.ramp.jerk, b.ramp.jerk, rule.ramp_tolerance)) return false;
+    return !accel_can_bind(a, b) || close_to(w.ramp.accel, a.ramp.accel, b.ramp.accel, rule.ramp_tolerance);
+  }
+
   // Appends the stations after `a` up to and including `b`.
-  void refine(const Station& a, const Station& b, int depth) {
+  void refine(const Station& a, Station b, int depth) {
+    const Station w = limits_at(worst_point(a, b));
     const int budget = rule.max_segments - static_cast<int>(out.size());
-    if (depth < kMaxDepth && budget > 2 && b.s - a.s > 2 * rule.min_piece_mm) {
-      // Both ends at the feed: every varying limit is above it over the whole (monotone) piece.
-      const bool check_bound = !(a.bound.velocity == b.bound.velocity && constant_bound(a.bound) &&
-                                 constant_bound(b.bound));
-      const bool check_ramp = ramp_matters(a, b);
-      if (check_bound || check_ramp) {
-        const Station m = evaluate(0.5 * (a.s + b.s));
-        const bool split =
-            spread(a.bound.velocity, m.bound.velocity, b.bound.velocity) > rule.bound_tolerance ||
-            (check_ramp && spread(a.ramp.jerk, m.ramp.jerk, b.ramp.jerk) > rule.ramp_tolerance) ||
-            (check_ramp && accel_can_bind(a, b) &&
-             spread(a.ramp.accel, m.ramp.accel, b.ramp.accel) > rule.ramp_tolerance);
-        if (split) {
-          refine(a, m, depth + 1);
-          refine(m, b, depth + 1);
-          return;
-        }
-      }
+    const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
+    if (!can_split || acceptable(a, b, w)) {
+      b.piece_bound = w.bound;
+      b.piece_ramp = w.ramp;
+      out.push_back(b);
+      return;
     }
-    out.push_back(b);
+    // Split at the critical points inside (the pieces become monotone), else in the middle.
+    if (!critical_known) {
+      arc_critical_lengths(arc, length, critical);
+      std::sort(critical.begin(), critical.end());
+      critical_known = true;
+    }
+    const auto first = std::upper_bound(critical.begin(), critical.end(), a.s + rule.min_piece_mm);
+    const auto last = std::lower_bound(critical.begin(), critical.end(), b.s - rule.min_piece_mm);
+    Station from = a;
+    if (first < last) {
+      for (auto it = first; it != last; ++it) {
+        Station at = station(*it);
+        refine(from, at, depth + 1);
+        from = std::move(at);
+      }
+    } else {
+      Station m = station(0.5 * (a.s + b.s));
+      refine(a, m, depth + 1);
+      from = std::move(m);
+    }
+    refine(from, std::move(b), depth + 1);
   }
 };
 
 }  // namespace
 
 bool discretise_element(const geometry::Curve& curve, double length, double fine_step_mm,
-                        const DiscretisationRule& rule, const StationEvaluator& evaluate,
+                        const DiscretisationRule& rule, const PointLimits& limits_at,
                         std::vector<Station>& out) {
   out.clear();
-  out.push_back(evaluate(0.0));
+  auto station = [&](double s) {
+    Station st = limits_at(curve.at(s));
+    st.s = s;
+    return st;
+  };
+  out.push_back(station(0.0));
   const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve);
-  if (rule.fixed_segment_mm > 0 || !arc) {
-    const double step = rule.fixed_segment_mm > 0 ? rule.fixed_segment_mm : fine_step_mm;
+  if (rule.fixed_segment_mm > 0 || !arc || arc->sweep() == 0.0) {
+    // Equal segments; an axial move without sweep has constant limits and gets one.
+    const double step = rule.fixed_segment_mm > 0 ? rule.fixed_segment_mm : (arc ? length : fine_step_mm);
     const double n = std::clamp(std::ceil(length / step), 1.0, double(rule.max_segments));
     const double h = length / n;
     const auto count = static_cast<size_t>(n);
-    for (size_t k = 1; k <= count; ++k) out.push_back(evaluate(k == count ? length : h * static_cast<double>(k)));
+    for (size_t k = 1; k <= count; ++k) {
+      Station st = station(k == count ? length : h * static_cast<double>(k));
+      const Station& prev = out.back();
+      st.piece_bound = prev.bound.velocity <= st.bound.velocity ? prev.bound : st.bound;
+      st.piece_ramp = {std::min(prev.ramp.accel, st.ramp.accel), std::min(prev.ramp.jerk, st.ramp.jerk)};
+      out.push_back(std::move(st));
+    }
     return false;
   }
-  thread_local std::vector<double> cuts;
-  cuts.clear();
-  arc_critical_lengths(*arc, length, cuts);
-  std::sort(cuts.begin(), cuts.end());
-  Refiner refiner{rule, evaluate, length, out};
-  double last = 0.0;
-  for (double s : cuts) {
-    // Critical points closer than 1 µm to each other or to the ends add nothing.
-    if (s - last <= 1e-3 || length - s <= 1e-3) continue;
-    const Station a = out.back();
-    refiner.refine(a, evaluate(s), 0);
-    last = s;
-  }
-  const Station a = out.back();
-  refiner.refine(a, evaluate(length), 0);
-  static struct C { size_t n = 0, e = 0; ~C() { if (std::getenv("DRYCUT_STATS")) std::fprintf(stderr, "arcs %zu segments %zu\n", e, n); } } c;  // TEMP
-  c.n += out.size() - 1; ++c.e;
+  thread_local std::vector<double> critical;
+  critical.clear();
+  ArcRefiner refiner{*arc, length, rule, limits_at, critical, out};
+  refiner.prepare();
+  const Station start = out.back();
+  refiner.refine(start, station(length), 0);
   return true;
 }
 

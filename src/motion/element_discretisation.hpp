@@ -55,6 +55,9 @@ struct Station {
   CurvePoint point;
   VelocityBound bound;
   RampLimits ramp;
+  // The worst case over the piece that ends here (the segment's cap and ramp limits).
+  VelocityBound piece_bound;
+  RampLimits piece_ramp;
 };
 
 struct DiscretisationRule {
@@ -65,14 +68,15 @@ struct DiscretisationRule {
   int max_segments = 20000;
 };
 
-using StationEvaluator = std::function<Station(double s)>;
+// The limits at a point (the returned station's s is set by the caller).
+using PointLimits = std::function<Station(const CurvePoint& point)>;
 
 // Fills `out` with the stations of a curved element of length `length`, the start (s = 0)
-// first and the end (s = length) last. `evaluate` gives the limits at an arc length;
+// first and the end (s = length) last. `limits_at` gives the limits at a point;
 // `fine_step_mm` is h for curves without a closed form. Returns true when the stations are
 // the adaptive pieces (time their segments along the envelope), false for equal segments.
 bool discretise_element(const geometry::Curve& curve, double length, double fine_step_mm,
-                        const DiscretisationRule& rule, const StationEvaluator& evaluate,
+                        const DiscretisationRule& rule, const PointLimits& limits_at,
                         std::vector<Station>& out);
 
 }  // namespace drycut::motion

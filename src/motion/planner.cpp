@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "machine/alarm.hpp"
 
@@ -16,9 +15,6 @@ DiscretisationRule discretisation_rule(const PlannerOptions& options) {
   DiscretisationRule rule;
   rule.fixed_segment_mm = options.reference_segment_mm;
   rule.max_segments = kMaxSegmentsPerElement;
-  if (const char* e = std::getenv("DRYCUT_TOL_V")) rule.bound_tolerance = std::atof(e);  // TEMP
-  if (const char* e = std::getenv("DRYCUT_TOL_R")) rule.ramp_tolerance = std::atof(e);  // TEMP
-  if (const char* e = std::getenv("DRYCUT_FIXED")) rule.fixed_segment_mm = std::atof(e);  // TEMP
   return rule;
 }
 
@@ -152,18 +148,19 @@ void Planner::append_motion(interp::PathElement element) {
     stations[1] = stations[0];
     stations[1].s = length;
     stations[1].point = curve.at(length);
+    stations[1].piece_bound = stations[0].bound;
+    stations[1].piece_ramp = stations[0].ramp;
   } else {
-    auto evaluate = [&](double s) {
+    auto limits_at = [&](const CurvePoint& p) {
       Station st;
-      st.s = s;
-      st.point = curve.at(s);
-      st.bound = bound_at(st.point);
-      st.ramp = tangential_limits(dyn, st.point);
+      st.point = p;
+      st.bound = bound_at(p);
+      st.ramp = tangential_limits(dyn, p);
       return st;
     };
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
     const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
-    envelope = discretise_element(curve, length, fine_step, discretisation_, evaluate, stations);
+    envelope = discretise_element(curve, length, fine_step, discretisation_, limits_at, stations);
   }
   const size_t n = stations.size() - 1;
   const CurvePoint& start = stations[0].point;
@@ -198,8 +195,8 @@ void Planner::append_motion(interp::PathElement element) {
     Segment seg;
     seg.length = b.s - a.s;
     seg.s_start = a.s;
-    seg.cap = std::min(a.bound.velocity, b.bound.velocity);
-    seg.ramp = min_limits(a.ramp, b.ramp);
+    seg.cap = b.piece_bound.velocity;
+    seg.ramp = b.piece_ramp;
     seg.envelope = envelope;
     segments_.push_back(seg);
     Node node;
