@@ -186,9 +186,11 @@ bool discretise_element(const geometry::Curve& curve, double length, double fine
   };
   out.push_back(station(0.0));
   const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve);
-  if (rule.fixed_segment_mm > 0 || !arc || arc->sweep() == 0.0) {
+  if (rule.equal_segments || !arc || arc->sweep() == 0.0) {
     // Equal segments; an axial move without sweep has constant limits and gets one.
-    const double step = rule.fixed_segment_mm > 0 ? rule.fixed_segment_mm : (arc ? length : fine_step_mm);
+    const double step = rule.equal_segments && rule.fixed_segment_mm > 0 ? rule.fixed_segment_mm
+                        : (arc && !rule.equal_segments)                  ? length
+                                                                         : fine_step_mm;
     const double n = std::clamp(std::ceil(length / step), 1.0, double(rule.max_segments));
     const double h = length / n;
     const auto count = static_cast<size_t>(n);

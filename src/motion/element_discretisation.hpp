@@ -36,8 +36,8 @@
 //    and nothing is split, however long the arc. On an arc at the feed the cost is the number of
 //    critical points in its sweep (at most 4 per turn and axis, plus 2 per helix turn and axis).
 //
-// 3. fixed_segment_mm > 0 replaces all of this by equal segments of at most that length for every
-//    curve (a test reference: very fine segments approximate the continuous limits).
+// 3. equal_segments replaces all of this by equal segments of fixed_segment_mm (when > 0) or of
+//    h for every curve (test references: the former rule, or very fine segments).
 //
 // At most max_segments segments per element. Lines never come here (one segment).
 #include <functional>
@@ -64,7 +64,8 @@ struct DiscretisationRule {
   double bound_tolerance = 0.02;
   double ramp_tolerance = 0.05;
   double min_piece_mm = 1e-3;
-  double fixed_segment_mm = 0;  // > 0: equal segments (reference)
+  bool equal_segments = false;  // reference: equal segments of fixed_segment_mm, or of h
+  double fixed_segment_mm = 0;
   int max_segments = 20000;
 };
 

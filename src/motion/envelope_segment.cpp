@@ -46,6 +46,27 @@ void envelope_dynamics(double v0, double u, RampLimits l, double& accel, double&
   jerk = (accel_at(u + h) - accel_at(lo)) / (u + h - lo) * accel;
 }
 
+constexpr int kGridTerms = 8;
+
+// Time of the first grid segments from the anchor that lie in [d_lo, d_hi] (anchor distances),
+// as the former equal segments ran them, minus the envelope time over the same stretch.
+double grid_correction(const EnvelopeSide& side, double d_lo, double d_hi) {
+  const double h = side.grid;
+  if (h <= 0 || !std::isfinite(side.limits.jerk) || d_hi <= d_lo) return 0.0;
+  const double v0 = side.anchor_velocity;
+  double correction = 0;
+  double v_m = v0;
+  for (int m = 0; m < kGridTerms && (m + 1) * h <= d_hi * (1 + 1e-12); ++m) {
+    const double v_next = ramp_reach(v0, (m + 1) * h, side.limits);
+    if (m * h >= d_lo * (1 - 1e-12) - 1e-12) {
+      correction += 2 * h / (v_m + v_next) -
+                    (envelope_time(v0, v_next - v0, side.limits) - envelope_time(v0, v_m - v0, side.limits));
+    }
+    v_m = v_next;
+  }
+  return correction;
+}
+
 }  // namespace
 
 double envelope_time(double v0, double u, RampLimits l) {
@@ -113,6 +134,10 @@ EnvelopeSegment plan_envelope_segment(double length, double cap, EnvelopeSide ri
                envelope_time(fall.anchor_velocity, e.u_fall0, fall.limits);
   }
   e.t_cruise = e.x_fall > e.x_rise ? (e.x_fall - e.x_rise) / top : 0.0;
+  e.t_rise_envelope = e.t_rise;
+  e.t_fall_envelope = e.t_fall;
+  if (e.x_rise > 0) e.t_rise += grid_correction(rise, rise.offset, rise.offset + e.x_rise);
+  if (e.x_fall < length) e.t_fall += grid_correction(fall, fall.offset, fall.offset + length - e.x_fall);
   e.duration = e.t_rise + e.t_cruise + e.t_fall;
   return e;
 }
@@ -122,7 +147,8 @@ ProfileState evaluate(const EnvelopeSegment& e, double t) {
   ProfileState st;
   if (t < e.t_rise) {
     const EnvelopeSide& side = e.rise;
-    const double u = invert_time(side.anchor_velocity, e.u_rise0, e.u_rise1, t, side.limits);
+    // Samples follow the envelope, stretched onto the (grid-corrected) rise time.
+    const double u = invert_time(side.anchor_velocity, e.u_rise0, e.u_rise1, t * e.t_rise_envelope / e.t_rise, side.limits);
     st.v = side.anchor_velocity + u;
     st.s = std::clamp(distance_at(side, st.v), 0.0, e.length);
     envelope_dynamics(side.anchor_velocity, u, side.limits, st.a, st.j);
@@ -131,7 +157,8 @@ ProfileState evaluate(const EnvelopeSegment& e, double t) {
     st.s = std::min(e.x_rise + e.peak * (t - e.t_rise), e.length);
   } else {
     const EnvelopeSide& side = e.fall;
-    const double u = invert_time(side.anchor_velocity, e.u_fall0, e.u_fall1, e.duration - t, side.limits);
+    const double u = invert_time(side.anchor_velocity, e.u_fall0, e.u_fall1,
+                                 (e.duration - t) * e.t_fall_envelope / e.t_fall, side.limits);
     st.v = side.anchor_velocity + u;
     st.s = std::clamp(e.length - distance_at(side, st.v), 0.0, e.length);
     envelope_dynamics(side.anchor_velocity, u, side.limits, st.a, st.j);

@@ -21,6 +21,14 @@
 //                        τ(u) = (3·w - sqrt(v0)·atan(w / sqrt(v0))) / sqrt(j),  w = sqrt(u)
 //   SOFT, u > u* = a²/j: D(u) = (2·v0 + u)/2·(u/a + a/j),  dD/du = (v0 + u)/a + a/(2j),
 //                        τ(u) = τ(u*) + (u - u*)/a + a/(2j)·ln((v0 + u)/(v0 + u*))
+// GRID: near an anchor at low velocity the short segments do not converge quickly: from rest
+// under SOFT, v ∝ D^(2/3) and 1/v is singular, so n segments of h at constant acceleration are
+// faster than the envelope by about (h/j)^(1/3) per ramp (the first segment alone: 2·h/v1
+// against 3·h/v1). To keep the times of the former rule (h = clamp(v·T_IPO, 0.01, 0.5) mm), the
+// first kGridTerms segments of h from each anchor are timed as those segments were,
+// 2·h / (v_m + v_m+1), instead of by τ; further out the two agree (the difference decays like
+// m^(-8/3)). Under BRISK both are exact and equal.
+//
 // The segment time is the rise time, the cruise at the cap and the fall time; where the rise
 // meets the fall below the cap, the meeting velocity solves D_r(v) + D_f(v) = L + p_r + p_f
 // (bisection; both sides are increasing in v).
@@ -36,6 +44,7 @@ struct EnvelopeSide {
   RampLimits limits;
   double near = 0;  // the envelope at the end it enters by: ramp_reach(anchor, offset)
   double far = 0;   // and at the other end: ramp_reach(anchor, offset + length)
+  double grid = 0;  // h of the equal segments this emulates (0: the continuous envelope)
 };
 
 struct EnvelopeSegment {
@@ -47,6 +56,7 @@ struct EnvelopeSegment {
   double u_rise0 = 0, u_rise1 = 0;     // rise: anchor-relative Δv at x = 0 and x = x_rise
   double u_fall0 = 0, u_fall1 = 0;     // fall: at x = L and at x = x_fall
   double t_rise = 0, t_cruise = 0, t_fall = 0;
+  double t_rise_envelope = 0, t_fall_envelope = 0;  // before the grid correction (samples)
   double duration = 0;
 };
 

@@ -13,6 +13,7 @@ constexpr int kMaxSegmentsPerElement = 20000;
 
 DiscretisationRule discretisation_rule(const PlannerOptions& options) {
   DiscretisationRule rule;
+  rule.equal_segments = options.reference_segments;
   rule.fixed_segment_mm = options.reference_segment_mm;
   rule.max_segments = kMaxSegmentsPerElement;
   return rule;
@@ -139,6 +140,7 @@ void Planner::append_motion(interp::PathElement element) {
   // (element_discretisation.hpp).
   std::vector<Station>& stations = stations_;
   bool envelope = false;
+  double grid = 0;
   if (w.element.kind == interp::ElementKind::Line) {
     stations.resize(2);
     stations[0].s = 0.0;
@@ -161,6 +163,7 @@ void Planner::append_motion(interp::PathElement element) {
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
     const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
     envelope = discretise_element(curve, length, fine_step, discretisation_, limits_at, stations);
+    grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
   }
   const size_t n = stations.size() - 1;
   const CurvePoint& start = stations[0].point;
@@ -198,6 +201,7 @@ void Planner::append_motion(interp::PathElement element) {
     seg.cap = b.piece_bound.velocity;
     seg.ramp = b.piece_ramp;
     seg.envelope = envelope;
+    seg.grid = grid;
     segments_.push_back(seg);
     Node node;
     node.limit = b.bound.velocity;
@@ -313,8 +317,8 @@ void Planner::commit_front() {
       RampAnchor fall = next.anchor;
       const double fall_far = extend(fall, next.backward, seg);
       const EnvelopeSegment profile = plan_envelope_segment(
-          seg.length, seg.cap, {rise.velocity, rise.distance - seg.length, rise.limits, v, reach},
-          {fall.velocity, fall.distance - seg.length, fall.limits, next.backward, fall_far});
+          seg.length, seg.cap, {rise.velocity, rise.distance - seg.length, rise.limits, v, reach, seg.grid},
+          {fall.velocity, fall.distance - seg.length, fall.limits, next.backward, fall_far, seg.grid});
       duration = profile.duration;
       peak = profile.peak;
       if (options_.emit_samples && std::isfinite(duration))

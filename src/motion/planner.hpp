@@ -21,8 +21,8 @@
 //      h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), at most
 //      20000 per element: their planned time depends on h itself (up to 0.3 % between h and
 //      a fine reference on the reference experiment), so they keep it.
-//    PlannerOptions::reference_segment_mm > 0 cuts every curve into equal segments of that
-//    length instead (a fine-segment reference for tests).
+//    PlannerOptions::reference_segments cuts every curve into the equal segments of h (or of
+//    reference_segment_mm) instead: the former rule, a reference for tests.
 //
 // 2. Limits (path_constraints.hpp). At each node the POINT constraints give an upper bound on
 //    the path velocity, each with its Limit tag: programmed F, axis velocity
@@ -126,6 +126,7 @@ class Planner : public interp::ElementSink {
     double cap = 0;
     RampLimits ramp;
     bool envelope = false;  // timed along the ramp envelope (envelope_segment.hpp)
+    double grid = 0;        // h of the former equal segments of its element (envelope only)
   };
   struct WindowElement {
     interp::PathElement element;
