@@ -48,19 +48,24 @@ void envelope_dynamics(double v0, double u, RampLimits l, double& accel, double&
 
 constexpr int kGridTerms = 8;
 
-// Time of the first grid segments from the anchor that lie in [d_lo, d_hi] (anchor distances),
-// as the former equal segments ran them, minus the envelope time over the same stretch.
-double grid_correction(const EnvelopeSide& side, double d_lo, double d_hi) {
+// Time of the first grid segments from the anchor that start in [d_lo, d_hi) (anchor
+// distances) and end before `d_ramp_end`, as the former equal segments ran them, minus the
+// envelope time over the same cells. A cell crossing into the next segment counts here.
+double grid_correction(const EnvelopeSide& side, double d_lo, double d_hi, double d_ramp_end) {
   const double h = side.grid;
-  if (h <= 0 || !std::isfinite(side.limits.jerk) || d_hi <= d_lo) return 0.0;
+  if (h <= 0 || !std::isfinite(side.limits.jerk) || d_hi <= d_lo || d_lo >= kGridTerms * h) return 0.0;
   const double v0 = side.anchor_velocity;
+  const double eps = 1e-9 * h;
   double correction = 0;
   double v_m = v0;
-  for (int m = 0; m < kGridTerms && (m + 1) * h <= d_hi * (1 + 1e-12); ++m) {
+  for (int m = 0; m < kGridTerms && m * h < d_hi - eps && (m + 1) * h <= d_ramp_end + eps; ++m) {
     const double v_next = ramp_reach(v0, (m + 1) * h, side.limits);
-    if (m * h >= d_lo * (1 - 1e-12) - 1e-12) {
-      correction += 2 * h / (v_m + v_next) -
-                    (envelope_time(v0, v_next - v0, side.limits) - envelope_time(v0, v_m - v0, side.limits));
+    if (m * h >= d_lo - eps) {
+      const double grid_time = 2 * h / (v_m + v_next);
+      const double term = grid_time - (envelope_time(v0, v_next - v0, side.limits) -
+                                       envelope_time(v0, v_m - v0, side.limits));
+      correction += term;
+      if (std::abs(term) < 1e-9 * grid_time) break;  // far from a standstill: nothing to correct
     }
     v_m = v_next;
   }
@@ -136,8 +141,16 @@ EnvelopeSegment plan_envelope_segment(double length, double cap, EnvelopeSide ri
   e.t_cruise = e.x_fall > e.x_rise ? (e.x_fall - e.x_rise) / top : 0.0;
   e.t_rise_envelope = e.t_rise;
   e.t_fall_envelope = e.t_fall;
-  if (e.x_rise > 0) e.t_rise += grid_correction(rise, rise.offset, rise.offset + e.x_rise);
-  if (e.x_fall < length) e.t_fall += grid_correction(fall, fall.offset, fall.offset + length - e.x_fall);
+  // A ramp that reaches the other end of the segment goes on in the next one.
+  const double inf = std::numeric_limits<double>::infinity();
+  if (e.x_rise > 0) {
+    const double d_end = rise.offset + e.x_rise;
+    e.t_rise += grid_correction(rise, rise.offset, d_end, e.x_rise < length ? d_end : inf);
+  }
+  if (e.x_fall < length) {
+    const double d_end = fall.offset + length - e.x_fall;
+    e.t_fall += grid_correction(fall, fall.offset, d_end, e.x_fall > 0 ? d_end : inf);
+  }
   e.duration = e.t_rise + e.t_cruise + e.t_fall;
   return e;
 }
