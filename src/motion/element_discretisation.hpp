@@ -1,45 +1,46 @@
 #pragma once
 // Where the planner puts the nodes of a curved element (arc, helix, spline span, offset curve).
-// The cost of an element follows the variation of its limits, not its length.
+// On a circle or helix the cost follows the variation of its limits, not its length.
 //
 // RULE
 // ====
-// A segment between two nodes is planned with the LOWER velocity bound and the lower ramp
-// limits (tangential acceleration and jerk) of its two end nodes. That is the exact worst case
-// over the segment when every per-axis quantity the limits read (|t_i|, |κ_i|, |P'''_i|) is
-// monotone on it. The discretiser therefore
+// Every point constraint (path_constraints.hpp) and the ramp limits (tangential_limits) are a
+// minimum over the axes of a function that falls as |t_i|, |κ_i| or |P'''_i| grows. So the
+// worst case of all of them over a stretch of a curve is their value at one synthetic WORST
+// POINT whose components are the per-axis maxima of |t_i|, |κ_i|, |P'''_i| over the stretch.
 //
-// Only curves with a closed form below (circles and helices) are cut this way; their segments
-// are then timed along the ramp envelope (envelope_segment.hpp), which is what the short equal
-// segments used before converge to. Other curves (spline spans, offset curves) keep short equal
-// segments of h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity): their
-// planned times depend on h itself (up to 0.3 % between h and h/10 on the reference
-// experiment), so a coarser rule would change them.
+// Circles and helices (geometry::ArcCurve: radius r, plane axes e1, e2, normal n, pitch p per
+// radian, φ the angle) have these maxima in closed form:
+//    radial_i(φ) = e1_i cos φ + e2_i sin φ = R_i cos(φ - α_i),  R_i = |(e1_i, e2_i)|,
+//    along_i(φ)  = radial_i'(φ)             = -R_i sin(φ - α_i),
+//    t_i = (r·along_i + p·n_i)/S,  κ_i = -r/S²·radial_i,  P'''_i ∝ r/S³·along_i,  S = sqrt(r²+p²)
+// each is a sinusoid (plus a constant for a helix tangent): its largest magnitude over a swept
+// angle is at an end of the sweep or at an interior extreme, φ = α_i + k·π/2 (the quadrant
+// points in the working plane). An axis along n (Z under G17) is constant.
 //
-// 1. Cuts at the CRITICAL points, where that is known in closed form. On a circle or helix
-//    (geometry::ArcCurve: centre c, radius r, plane axes e1, e2, normal n, pitch p per radian)
-//      radial_i(φ) = e1_i cos φ + e2_i sin φ = R_i cos(φ - α_i),  R_i = |(e1_i, e2_i)|,
-//      along_i(φ)  = radial_i'(φ)             = -R_i sin(φ - α_i),
-//      t_i ∝ r·along_i + p·n_i,   κ_i ∝ radial_i,   P'''_i ∝ along_i,
-//    so every quantity is monotone between the angles φ = α_i + k·π/2 (zeros and extremes of
-//    radial_i and along_i: the quadrant points in the working plane) and, on a helix, the
-//    angles where t_i = 0 (sin(φ - α_i) = p·n_i / (r·R_i)). An axis along n (Z under G17) is
-//    constant.
+// 1. The whole element is ONE piece; its segment gets the limits of its worst point.
+// 2. The piece is accepted when that worst case is within bound_tolerance (2 %) of the better
+//    end's velocity bound (the bound includes F and the short-block limit, so an arc whose
+//    varying limits all stay above F is never cut, however long) and, where a ramp can run
+//    (within the distance of a ramp from rest to the bound from either end of the element),
+//    within ramp_tolerance (5 %) for the ramp jerk and, when a ramp can reach it (BRISK, or
+//    Δv > a²/j under SOFT), the ramp acceleration.
+// 3. Otherwise it is cut at the CRITICAL angles inside it (the extremes above and, on a helix,
+//    the zeros of t_i, sin(φ - α_i) = p·n_i/(r·R_i)), where every component becomes monotone,
+//    or, when there are none, in halves; the pieces go back to step 2 (min_piece_mm, at most
+//    max_segments per element).
+// Segments of these pieces are timed along the ramp envelope (envelope_segment.hpp), which is
+// what the short equal segments used before converge to.
 //
-// 2. Refines each piece [a, b] while a limit really varies on it: with the velocity bound v and
-//    the ramp limits (acceleration A, jerk J; jerk only under SOFT) evaluated at a, at the
-//    midpoint m and at b, the piece is halved while
-//       max(v) > (1 + bound_tolerance) · min(v)   over {a, m, b}, or the same for A or J with
-//       ramp_tolerance,
-//    down to min_piece_mm. The bound already includes the constant limits (programmed F, the
-//    short-block limit): where F binds over the whole piece, v is the same at all three points
-//    and nothing is split, however long the arc. On an arc at the feed the cost is the number of
-//    critical points in its sweep (at most 4 per turn and axis, plus 2 per helix turn and axis).
+// Other curves (spline spans, offset curves) have no closed form; they keep equal segments of
+// h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), each with the
+// lower limits of its two end nodes. Their planned times depend on h itself (up to 0.3 %
+// between h and a 0.02 mm reference on the reference experiment's splines, more near stops
+// under SOFT), so a coarser rule would change them.
 //
-// 3. equal_segments replaces all of this by equal segments of fixed_segment_mm (when > 0) or of
-//    h for every curve (test references: the former rule, or very fine segments).
-//
-// At most max_segments segments per element. Lines never come here (one segment).
+// equal_segments replaces all of this by equal segments of fixed_segment_mm (when > 0) or of h
+// for every curve (test references: the former rule, or very fine segments).
+// Lines never come here (one segment).
 #include <functional>
 #include <vector>
 
