@@ -46,7 +46,7 @@ void envelope_dynamics(double v0, double u, RampLimits l, double& accel, double&
   jerk = (accel_at(u + h) - accel_at(lo)) / (u + h - lo) * accel;
 }
 
-constexpr int kGridTerms = 8;
+constexpr int kGridTerms = 3;
 
 // Time of the first grid segments from the anchor that start in [d_lo, d_hi) (anchor
 // distances) and end before `d_ramp_end`, as the former equal segments ran them, minus the
@@ -65,7 +65,7 @@ double grid_correction(const EnvelopeSide& side, double d_lo, double d_hi, doubl
       const double term = grid_time - (envelope_time(v0, v_next - v0, side.limits) -
                                        envelope_time(v0, v_m - v0, side.limits));
       correction += term;
-      if (std::abs(term) < 1e-9 * grid_time) break;  // far from a standstill: nothing to correct
+      if (std::abs(term) < 1e-5 * grid_time) break;  // far from a standstill: nothing to correct
     }
     v_m = v_next;
   }
