@@ -224,5 +224,50 @@ TEST(ArcDiscretisation, SplineTimesEqualAFineSegmentReference) {
   }
 }
 
+
+TEST(ArcDiscretisation, SamplesOnArcsStayWithinTheAxisLimits) {
+  // Every IPO sample of random arc chains (envelope segments) keeps each axis velocity and
+  // acceleration within 2 % of its limit, as planner.hpp promises for arcs.
+  struct Check : PlanObserver {
+    Vec3 vmax, amax;
+    double worst_v = 0, worst_a = 0;
+    size_t samples = 0;
+    void on_sample(const TrajectorySample& s) override {
+      ++samples;
+      for (int i = 0; i < 3; ++i) {
+        worst_v = std::max(worst_v, std::abs(s.axis_velocity_mm_s[i]) / vmax[i]);
+        worst_a = std::max(worst_a, std::abs(s.axis_accel_mm_s2[i]) / amax[i]);
+      }
+    }
+  };
+  std::mt19937 rng(99);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  double reached_v = 0, reached_a = 0;
+  for (int run = 0; run < 40; ++run) {
+    auto profile = plain_profile();
+    Check check;
+    for (int i = 0; i < 3; ++i) {
+      auto& a = profile.axes[static_cast<size_t>(i)];
+      a.max_velocity_mm_s = 50 + 100 * u01(rng);
+      a.max_accel_mm_s2 = 500 + 3000 * u01(rng);
+      check.vmax[i] = a.max_velocity_mm_s;
+      check.amax[i] = a.max_accel_mm_s2;
+    }
+    PlannerOptions options;
+    options.emit_samples = true;
+    Planner planner(profile, check, options);
+    for (auto& e : random_arcs(rng, Mode{.soft = run % 2 == 0, .exact_stop = run % 3 == 0}, 10)) planner.consume(std::move(e));
+    planner.finish();
+    EXPECT_GT(check.samples, 10u);
+    EXPECT_LE(check.worst_v, 1.02) << run;
+    EXPECT_LE(check.worst_a, 1.02) << run;
+    reached_v = std::max(reached_v, check.worst_v);
+    reached_a = std::max(reached_a, check.worst_a);
+  }
+  // The limits are really reached (the check is not vacuous).
+  EXPECT_GT(reached_v, 0.95);
+  EXPECT_GT(reached_a, 0.95);
+}
+
 }  // namespace
 }  // namespace drycut::motion::testing
