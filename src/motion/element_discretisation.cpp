@@ -124,18 +124,24 @@ struct ArcRefiner {
     return a.s < zone || b.s > length - zone;
   }
 
-  bool accel_can_bind(const Station& a, const Station& b) const {
+  // Tolerance on the ramp acceleration: a ramp up to v spends only the part of its velocity
+  // change above a²/j at the acceleration limit (SOFT), so the tolerance on the ramp time is
+  // met with a proportionally larger one on the acceleration; infinite when it cannot bind.
+  double accel_tolerance(const Station& a, const Station& b) const {
     const double v = std::max(a.bound.velocity, b.bound.velocity);
     const double jerk = std::max(a.ramp.jerk, b.ramp.jerk);
     const double accel = std::min(a.ramp.accel, b.ramp.accel);
-    return !std::isfinite(jerk) || v > accel * accel / jerk;
+    if (!std::isfinite(jerk)) return rule.ramp_tolerance;
+    const double at_limit = v - accel * accel / jerk;
+    return at_limit > 0 ? rule.ramp_tolerance * v / at_limit : std::numeric_limits<double>::infinity();
   }
 
   bool acceptable(const Station& a, const Station& b, const Station& w) const {
     if (!close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance)) return false;
     if (!ramp_matters(a, b)) return true;
     if (!close_to(w.ramp.jerk, a.ramp.jerk, b.ramp.jerk, rule.ramp_tolerance)) return false;
-    return !accel_can_bind(a, b) || close_to(w.ramp.accel, a.ramp.accel, b.ramp.accel, rule.ramp_tolerance);
+    const double tolerance = accel_tolerance(a, b);
+    return tolerance >= 1 || close_to(w.ramp.accel, a.ramp.accel, b.ramp.accel, tolerance);
   }
 
   // Appends the stations after `a` up to and including `b`.

@@ -23,8 +23,9 @@
 //    end's velocity bound (the bound includes F and the short-block limit, so an arc whose
 //    varying limits all stay above F is never cut, however long) and, where a ramp can run
 //    (within the distance of a ramp from rest to the bound from either end of the element),
-//    within ramp_tolerance (5 %) for the ramp jerk and, when a ramp can reach it (BRISK, or
-//    Δv > a²/j under SOFT), the ramp acceleration.
+//    within ramp_tolerance (5 %) for the ramp jerk and for the ramp acceleration; under SOFT a
+//    ramp up to v is at the acceleration limit only for the part of Δv above a²/j, so there
+//    the acceleration may vary by ramp_tolerance · v / (v - a²/j) (not checked when v <= a²/j).
 // 3. Otherwise it is cut at the CRITICAL angles inside it (the extremes above and, on a helix,
 //    the zeros of t_i, sin(φ - α_i) = p·n_i/(r·R_i)), where every component becomes monotone,
 //    or, when there are none, in halves; the pieces go back to step 2 (min_piece_mm, at most
