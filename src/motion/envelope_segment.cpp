@@ -145,11 +145,11 @@ EnvelopeSegment plan_envelope_segment(double length, double cap, EnvelopeSide ri
   const double inf = std::numeric_limits<double>::infinity();
   if (e.x_rise > 0) {
     const double d_end = rise.offset + e.x_rise;
-    e.t_rise += grid_correction(rise, rise.offset, d_end, e.x_rise < length ? d_end : inf);
+    e.t_rise += grid_correction(rise, rise.offset, d_end, e.x_rise < length * (1 - 1e-9) ? d_end : inf);
   }
   if (e.x_fall < length) {
     const double d_end = fall.offset + length - e.x_fall;
-    e.t_fall += grid_correction(fall, fall.offset, d_end, e.x_fall > 0 ? d_end : inf);
+    e.t_fall += grid_correction(fall, fall.offset, d_end, e.x_fall > length * 1e-9 ? d_end : inf);
   }
   e.duration = e.t_rise + e.t_cruise + e.t_fall;
   return e;
