@@ -12,11 +12,13 @@
 //      over the swept angle, from the ends and the interior extremes of the sine/cosine
 //      components). Only where that worst case is more than 2 % below the better end (the
 //      velocity bound varies, e.g. the axis or centripetal limit on a fast small arc), or, near
-//      the element's ends where ramps run, the ramp acceleration/jerk more than 5 %, it is cut:
-//      first at the critical angles (quadrant points, zeros of a helix tangent component),
-//      then in halves. On a 200,000-block arc program: 2.3 segments per arc instead of ~100.
+//      the element's ends where ramps run, the ramp jerk/acceleration varies by more than 5 %
+//      (of the ramp time under SOFT), it is cut: first at the critical angles (quadrant points,
+//      zeros of a helix tangent component), then in halves. On the 200,000-block arc benchmark
+//      (bench/arcs) about 2 segments per arc instead of ~100.
 //      These segments are timed along the RAMP ENVELOPE (envelope_segment.hpp): the limit of
-//      the short equal segments used before, so planned times stay within 0.1 %.
+//      the short equal segments used before, with the first cells next to a standstill timed
+//      as those segments ran them, so planned times stay within 0.1 % of the former rule.
 //    - Other curves (spline spans, offset curves) are cut into n = ceil(L/h) equal segments,
 //      h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), at most
 //      20000 per element: their planned time depends on h itself (up to 0.3 % between h and
@@ -28,7 +30,7 @@
 //    the path velocity, each with its Limit tag: programmed F, axis velocity
 //    v·|t_i| <= vmax_i, centripetal acceleration v²·|κ_i| <= share·a_i, SOFT curvature jerk
 //    v³·|P'''_i| <= j_i, short block v <= factor·L/T_IPO. A segment's interior cap is the
-//    lower of its two end nodes. At a junction the JUNCTION constraints apply too: exact
+//    lower of its two end nodes (on arcs: its closed-form worst case, step 1). At a junction the JUNCTION constraints apply too: exact
 //    stop (G60/G9 -> 0) and the G64 overload rule |v·(t2_i - t1_i)| <= a_i·(OVL-1)·T_IPO.
 //    Before Dwell, Stop and ToolChange the path ends at rest (the window is flushed).
 //    Each segment also carries its tangential RampLimits: a_t = min_i a_i'/|t_i| (a_i' =
