@@ -59,4 +59,19 @@ RampLimits tangential_limits(const ElementDynamics& dynamics, const CurvePoint& 
 // per unit of path length (tangent × scale, curvature × scale², its rate × scale³).
 CurvePoint path_point(const ElementDynamics& dynamics, const geometry::Curve& curve, double s);
 
+// The curve seen along the path parameter (path_point), for code that walks a Curve.
+class PathParameterCurve : public geometry::Curve {
+ public:
+  PathParameterCurve(const geometry::Curve& curve, const ElementDynamics& dynamics, double path_length)
+      : curve_(curve), dynamics_(dynamics), length_(path_length) {}
+  double length() const override { return length_; }
+  CurvePoint at(double s) const override { return path_point(dynamics_, curve_, s); }
+  double max_curvature() const override { return curve_.max_curvature(); }
+
+ private:
+  const geometry::Curve& curve_;
+  const ElementDynamics& dynamics_;
+  double length_;
+};
+
 }  // namespace drycut::motion

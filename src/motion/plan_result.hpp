@@ -70,6 +70,11 @@ struct PlannerOptions {
   bool emit_samples = false;  // IPO-cycle samples to observer.on_sample
   double dip_threshold = 0.8; // a dip: velocity below this share of the programmed F
   size_t max_dips = 1000;
+  // Test references: cut every curved element into equal segments, of h = clamp(v_ref·T_IPO,
+  // 0.01, 0.5) mm (the rule before element_discretisation.hpp), or of reference_segment_mm
+  // when > 0, instead of the adaptive rule.
+  bool reference_segments = false;
+  double reference_segment_mm = 0;
 };
 
 }  // namespace drycut::motion

@@ -11,6 +11,14 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kMaxSegmentsPerElement = 20000;
 
+DiscretisationRule discretisation_rule(const PlannerOptions& options) {
+  DiscretisationRule rule;
+  rule.equal_segments = options.reference_segments;
+  rule.fixed_segment_mm = options.reference_segment_mm;
+  rule.max_segments = kMaxSegmentsPerElement;
+  return rule;
+}
+
 SourceLocation location_of(const BlockRef& ref) { return SourceLocation{ref.file_name(), ref.line, 0}; }
 
 [[noreturn]] void raise(int number, const std::string& detail, const interp::PathElement& e) {
@@ -29,6 +37,7 @@ Planner::Planner(const machine::MachineProfile& profile, PlanObserver& observer,
       options_(options),
       point_constraints_(default_point_constraints()),
       junction_constraints_(default_junction_constraints()),
+      discretisation_(discretisation_rule(options)),
       dips_(options.dip_threshold, options.max_dips) {
   position_ = profile.start_position;
 }
@@ -168,16 +177,42 @@ void Planner::append_motion(interp::PathElement element) {
     return b;
   };
 
-  // Discretise: lines have constant limits, curves are cut into short equal segments.
-  size_t n = 1;
-  if (w.element.kind != interp::ElementKind::Line) {
+  // Discretise: lines have constant limits, curves get nodes where their limits vary
+  // (element_discretisation.hpp).
+  std::vector<Station>& stations = stations_;
+  bool envelope = false;
+  double grid = 0;
+  if (w.element.kind == interp::ElementKind::Line) {
+    stations.resize(2);
+    stations[0].s = 0.0;
+    stations[0].point = path_point(dyn, curve, 0.0);
+    stations[0].bound = bound_at(stations[0].point);
+    stations[0].ramp = tangential_limits(dyn, stations[0].point);
+    stations[1] = stations[0];
+    stations[1].s = length;
+    stations[1].point = path_point(dyn, curve, length);
+    stations[1].piece_bound = stations[0].bound;
+    stations[1].piece_ramp = stations[0].ramp;
+  } else {
+    auto limits_at = [&](const CurvePoint& p) {
+      Station st;
+      st.point = p;
+      st.bound = bound_at(p);
+      st.ramp = tangential_limits(dyn, p);
+      return st;
+    };
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
-    const double h = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
-    n = static_cast<size_t>(std::clamp(std::ceil(length / h), 1.0, double(kMaxSegmentsPerElement)));
+    const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
+    // With grouped extra axes the path parameter is not the curve's arc length: the discretiser
+    // sees the curve through path_point (equal segments then; the arc rule needs an arc).
+    const PathParameterCurve scaled(curve, dyn, length);
+    const geometry::Curve& along = dyn.geometry_scale == 1.0 ? curve : scaled;
+    envelope = discretise_element(along, length, fine_step, discretisation_, limits_at, stations);
+    grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
   }
-  const CurvePoint start = path_point(dyn, curve, 0.0);
-  VelocityBound start_bound = bound_at(start);
-  RampLimits start_ramp = tangential_limits(dyn, start);
+  const size_t n = stations.size() - 1;
+  const CurvePoint& start = stations[0].point;
+  const VelocityBound start_bound = stations[0].bound;
 
   // The junction node: the window's start at rest, or the previous element's end.
   if (nodes_.empty()) {
@@ -202,36 +237,29 @@ void Planner::append_motion(interp::PathElement element) {
     j.limit_kind = b.limit;
   }
 
-  CurvePoint prev_point = start;
-  VelocityBound prev_bound = start_bound;
-  RampLimits prev_ramp = start_ramp;
-  const double h = length / static_cast<double>(n);
   for (size_t k = 1; k <= n; ++k) {
-    const double s = (k == n) ? length : h * static_cast<double>(k);
-    CurvePoint p = path_point(dyn, curve, s);
-    VelocityBound b = (w.element.kind == interp::ElementKind::Line) ? start_bound : bound_at(p);
-    RampLimits r = (w.element.kind == interp::ElementKind::Line) ? start_ramp : tangential_limits(dyn, p);
+    const Station& a = stations[k - 1];
+    const Station& b = stations[k];
     Segment seg;
-    seg.length = s - h * static_cast<double>(k - 1);
-    seg.s_start = h * static_cast<double>(k - 1);
-    seg.cap = std::min(prev_bound.velocity, b.velocity);
-    seg.ramp = min_limits(prev_ramp, r);
+    seg.length = b.s - a.s;
+    seg.s_start = a.s;
+    seg.cap = b.piece_bound.velocity;
+    seg.ramp = b.piece_ramp;
+    seg.envelope = envelope;
+    seg.grid = grid;
     segments_.push_back(seg);
     Node node;
-    node.limit = b.velocity;
-    node.limit_kind = b.limit;
+    node.limit = b.bound.velocity;
+    node.limit_kind = b.bound.limit;
     if (k == n && ends_in_exact_stop(w.element)) {
       node.limit = 0;
       node.limit_kind = Limit::ExactStop;
     }
     nodes_.push_back(node);
-    prev_point = p;
-    prev_bound = b;
-    prev_ramp = r;
   }
   w.segment_count = n;
   last_motion_ = &w;
-  last_end_ = prev_point;
+  last_end_ = stations[n].point;
   ++motion_in_window_;
 
   backward_pass(false);
@@ -316,6 +344,7 @@ void Planner::commit_front() {
     const Segment& seg = segments_[k];
     const Node& next = nodes_[k + 1];
     const double reach = extend(front_anchor_, v, seg);
+    const RampAnchor rise = front_anchor_;
     double v1;
     Limit k1;
     if (next.backward <= reach) {
@@ -326,14 +355,35 @@ void Planner::commit_front() {
       v1 = reach;
       k1 = kind;
     }
-    const SegmentProfile profile = plan_segment(v, v1, seg.cap, seg.length, seg.ramp);
+    double duration, peak;
+    if (seg.envelope && v >= seg.cap && v1 >= seg.cap) {
+      duration = seg.length / seg.cap;  // cruise: no ramp in this segment
+      peak = seg.cap;
+      if (options_.emit_samples)
+        emit_samples(w, seg, duration, [&](double t) { return ProfileState{std::min(seg.cap * t, seg.length), seg.cap, 0, 0}; });
+    } else if (seg.envelope) {
+      RampAnchor fall = next.anchor;
+      const double fall_far = extend(fall, next.backward, seg);
+      const EnvelopeSegment profile = plan_envelope_segment(
+          seg.length, seg.cap, {rise.velocity, rise.distance - seg.length, rise.limits, v, reach, seg.grid},
+          {fall.velocity, fall.distance - seg.length, fall.limits, next.backward, fall_far, seg.grid});
+      duration = profile.duration;
+      peak = profile.peak;
+      if (options_.emit_samples && std::isfinite(duration))
+        emit_samples(w, seg, duration, [&](double t) { return evaluate(profile, t); });
+    } else {
+      const SegmentProfile profile = plan_segment(v, v1, seg.cap, seg.length, seg.ramp);
+      duration = profile.duration;
+      peak = profile.peak;
+      if (options_.emit_samples && std::isfinite(duration))
+        emit_samples(w, seg, duration, [&](double t) { return evaluate(profile, t); });
+    }
     // A positive but absurdly small F would take forever: the control cannot move that slowly.
-    if (!std::isfinite(profile.duration)) raise(14800, "feed too small to traverse the block", e);
-    if (options_.emit_samples) emit_samples(w, seg, profile);
-    clock_s_ += profile.duration;
-    time += profile.duration;
+    if (!std::isfinite(duration)) raise(14800, "feed too small to traverse the block", e);
+    clock_s_ += duration;
+    time += duration;
     length += seg.length;
-    v_max = std::max(v_max, profile.peak);
+    v_max = std::max(v_max, peak);
     if (v1 < v_min) {
       v_min = v1;
       v_min_kind = k1;
@@ -420,12 +470,13 @@ void Planner::account_pause(const interp::PathElement& e, double duration) {
   observer_.on_block(t);
 }
 
-void Planner::emit_samples(const WindowElement& w, const Segment& seg, const SegmentProfile& profile) {
-  const double end = clock_s_ + profile.duration;
+void Planner::emit_samples(const WindowElement& w, const Segment& seg, double duration,
+                           const std::function<ProfileState(double)>& state_at) {
+  const double end = clock_s_ + duration;
   for (;;) {
     const double t = static_cast<double>(next_sample_) * profile_.ipo_cycle_s;
     if (t > end) break;
-    const ProfileState st = evaluate(profile, t - clock_s_);
+    const ProfileState st = state_at(t - clock_s_);
     const CurvePoint p = path_point(w.dynamics, *w.element.curve, seg.s_start + st.s);
     TrajectorySample sample;
     sample.t_s = t;

@@ -3,17 +3,34 @@
 //
 // ALGORITHM
 // =========
-// 1. Discretisation. Every motion element becomes one or more SEGMENTS between NODES on the
-//    path. A line has constant limits: one segment. Arcs and spline spans change direction
-//    and curvature along the element: they are cut into n = ceil(L/h) equal segments with
-//    h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), at most
-//    20000 per element. The node between two elements (the JUNCTION) is shared.
+// 1. Discretisation (element_discretisation.hpp). Every motion element becomes one or more
+//    SEGMENTS between NODES on the path; the node between two elements (the JUNCTION) is
+//    shared. A segment's cap and ramp limits are the worst case of the limits over it.
+//    - A line has constant limits: one segment.
+//    - A circle or helix (ArcCurve) costs what its limits vary, not its length: it starts as
+//      ONE segment whose worst case is closed-form (per axis the largest |t_i|, |κ_i|, |P'''_i|
+//      over the swept angle, from the ends and the interior extremes of the sine/cosine
+//      components). Only where that worst case is more than 2 % below the better end (the
+//      velocity bound varies, e.g. the axis or centripetal limit on a fast small arc), or, near
+//      the element's ends where ramps run, the ramp jerk/acceleration varies by more than 5 %
+//      (of the ramp time under SOFT), it is cut: first at the critical angles (quadrant points,
+//      zeros of a helix tangent component), then in halves. On the 200,000-block arc benchmark
+//      (bench/arcs) about 2 segments per arc instead of ~100.
+//      These segments are timed along the RAMP ENVELOPE (envelope_segment.hpp): the limit of
+//      the short equal segments used before, with the first cells next to a standstill timed
+//      as those segments ran them, so planned times stay within 0.1 % of the former rule.
+//    - Other curves (spline spans, offset curves) are cut into n = ceil(L/h) equal segments,
+//      h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), at most
+//      20000 per element: their planned time depends on h itself (up to 0.3 % between h and
+//      a fine reference on the reference experiment), so they keep it.
+//    PlannerOptions::reference_segments cuts every curve into the equal segments of h (or of
+//    reference_segment_mm) instead: the former rule, a reference for tests.
 //
 // 2. Limits (path_constraints.hpp). At each node the POINT constraints give an upper bound on
 //    the path velocity, each with its Limit tag: programmed F, axis velocity
 //    v·|t_i| <= vmax_i, centripetal acceleration v²·|κ_i| <= share·a_i, SOFT curvature jerk
 //    v³·|P'''_i| <= j_i, short block v <= factor·L/T_IPO. A segment's interior cap is the
-//    lower of its two end nodes. At a junction the JUNCTION constraints apply too: exact
+//    lower of its two end nodes (on arcs: its closed-form worst case, step 1). At a junction the JUNCTION constraints apply too: exact
 //    stop (G60/G9 -> 0) and the G64 overload rule |v·(t2_i - t1_i)| <= a_i·(OVL-1)·T_IPO.
 //    Before Dwell, Stop and ToolChange the path ends at rest (the window is flushed).
 //    Each segment also carries its tangential RampLimits: a_t = min_i a_i'/|t_i| (a_i' =
@@ -42,7 +59,9 @@
 //    Each segment then gets its profile: accelerate, cruise at the cap, decelerate, with
 //    zero acceleration at both nodes; a segment too short for that (part of a ramp running
 //    over several segments) uses constant acceleration between its node velocities, which
-//    never exceeds the ramp's acceleration. Time = sum of the segment durations.
+//    never exceeds the ramp's acceleration. A segment of a circle or helix instead follows
+//    min(cap, rising ramp envelope, falling ramp envelope) from the two anchors (step 1).
+//    Time = sum of the segment durations.
 //    The element's BlockTiming (time, length, v_max, v_min and the Limit that bound v_min:
 //    the limit at the node or, on a ramp, the limit the ramp comes from) goes to the
 //    observer; optional samples at every IPO cycle (t = k·T_IPO) are evaluated from the
@@ -69,12 +88,15 @@
 // a limit, the opposite ramp or a block transition the acceleration may step (jerk is not
 // checked, and PATH_TRANS_JERK_LIM at curvature steps is not modelled).
 #include <deque>
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include "interp/path_element.hpp"
 #include "machine/machine_profile.hpp"
+#include "motion/element_discretisation.hpp"
 #include "motion/element_dynamics.hpp"
+#include "motion/envelope_segment.hpp"
 #include "motion/feed_dip_collector.hpp"
 #include "motion/path_constraints.hpp"
 #include "motion/plan_result.hpp"
@@ -115,6 +137,8 @@ class Planner : public interp::ElementSink {
     double s_start = 0;  // arc length in the element where the segment starts
     double cap = 0;
     RampLimits ramp;
+    bool envelope = false;  // timed along the ramp envelope (envelope_segment.hpp)
+    double grid = 0;        // h of the former equal segments of its element (envelope only)
   };
   struct WindowElement {
     interp::PathElement element;
@@ -132,7 +156,8 @@ class Planner : public interp::ElementSink {
   void commit_front();
   void flush();
   void account_pause(const interp::PathElement& element, double duration);
-  void emit_samples(const WindowElement& e, const Segment& seg, const SegmentProfile& profile);
+  void emit_samples(const WindowElement& e, const Segment& seg, double duration,
+                    const std::function<ProfileState(double)>& state_at);
   void emit_rest_samples(const interp::PathElement& element, double duration);
   void validate(const interp::PathElement& element) const;
   static double extend(RampAnchor& anchor, double v_here, const Segment& seg);
@@ -142,6 +167,8 @@ class Planner : public interp::ElementSink {
   PlannerOptions options_;
   std::vector<std::unique_ptr<PointConstraint>> point_constraints_;
   std::vector<std::unique_ptr<JunctionConstraint>> junction_constraints_;
+  DiscretisationRule discretisation_;
+  std::vector<Station> stations_;  // reused by append_motion
 
   std::deque<WindowElement> elements_;
   std::deque<Node> nodes_;

@@ -1,0 +1,221 @@
+#include "motion/element_discretisation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "interp/geometry/arc_curve.hpp"
+
+namespace drycut::motion {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kMaxDepth = 24;
+
+// Angles β + k·period (k integer) strictly inside the sweep, as arc lengths.
+void add_periodic(double beta, double period, double phi0, double sweep, double speed, std::vector<double>& out) {
+  const double lo = std::min(phi0, phi0 + sweep), hi = std::max(phi0, phi0 + sweep);
+  for (double phi = beta + std::ceil((lo - beta) / period) * period; phi < hi; phi += period) {
+    if (phi > lo) out.push_back(std::abs(phi - phi0) * speed);
+  }
+}
+
+void arc_critical_lengths(const geometry::ArcCurve& arc, double length, std::vector<double>& out) {
+  const double sweep = arc.sweep();
+  if (sweep == 0.0 || arc.radius() <= 0.0) return;  // straight axial move: constant limits
+  const double speed = length / std::abs(sweep);
+  const double pitch = arc.axial_travel() / sweep;
+  const Vec3& e1 = arc.first_axis();
+  const Vec3& e2 = arc.second_axis();
+  const Vec3 n = arc.normal();
+  for (int i = 0; i < 3; ++i) {
+    const double r_i = std::hypot(e1[i], e2[i]);
+    if (r_i < 1e-12) continue;  // the axis is along the normal: t_i, κ_i constant
+    const double alpha = std::atan2(e2[i], e1[i]);
+    add_periodic(alpha, kPi / 2, arc.start_angle(), sweep, speed, out);
+    // t_i = 0 on a helix: r·R_i·sin(φ - α) = p·n_i.
+    const double q = pitch * n[i] / (arc.radius() * r_i);
+    if (pitch != 0.0 && std::abs(q) < 1.0) {
+      add_periodic(alpha + std::asin(q), 2 * kPi, arc.start_angle(), sweep, speed, out);
+      add_periodic(alpha + kPi - std::asin(q), 2 * kPi, arc.start_angle(), sweep, speed, out);
+    }
+  }
+}
+
+
+// True when some β + k·period lies strictly inside (lo, hi).
+bool angle_inside(double beta, double period, double lo, double hi) {
+  const double phi = beta + std::ceil((lo - beta) / period) * period;
+  return phi > lo && phi < hi;
+}
+
+// True when `worst` is within `tolerance` of the better end (the piece's limit hardly varies).
+bool close_to(double worst, double a, double b, double tolerance) {
+  const double best = std::max(a, b);
+  if (!std::isfinite(best)) return !std::isfinite(worst);
+  return worst >= best * (1.0 - tolerance);
+}
+
+struct ArcRefiner {
+  const geometry::ArcCurve& arc;
+  double length;
+  const DiscretisationRule& rule;
+  const PointLimits& limits_at;
+  std::vector<double>& critical;  // ascending arc lengths, filled on the first split
+  std::vector<Station>& out;
+  bool critical_known = false;
+  std::array<double, 3> axis_radius{}, axis_phase{};  // R_i and α_i
+
+  void prepare() {
+    for (int i = 0; i < 3; ++i) {
+      const auto k = static_cast<size_t>(i);
+      axis_radius[k] = std::hypot(arc.first_axis()[i], arc.second_axis()[i]);
+      axis_phase[k] = std::atan2(arc.second_axis()[i], arc.first_axis()[i]);
+    }
+  }
+
+  Station station(double s) const {
+    Station st = limits_at(arc.at(s));
+    st.s = s;
+    return st;
+  }
+
+  double angle(double s) const { return arc.start_angle() + (arc.sweep() > 0 ? s : -s) * std::abs(arc.sweep()) / length; }
+
+  // Per axis the largest |t_i|, |κ_i| and |d³P/ds³_i| over [a, b]: at an end or at an interior
+  // extreme of radial_i / along_i (see the header). Every point constraint is a minimum over
+  // axes of a function falling in these, so the limits of this point are the worst case.
+  CurvePoint worst_point(const Station& a, const Station& b) const {
+    CurvePoint w = a.point;
+    const double lo = std::min(angle(a.s), angle(b.s)), hi = std::max(angle(a.s), angle(b.s));
+    const double r = arc.radius(), speed = length / std::abs(arc.sweep());
+    const double pitch = arc.axial_travel() / arc.sweep();
+    const Vec3 n = arc.normal();
+    for (int i = 0; i < 3; ++i) {
+      double t = std::max(std::abs(a.point.tangent[i]), std::abs(b.point.tangent[i]));
+      double k = std::max(std::abs(a.point.curvature_vector[i]), std::abs(b.point.curvature_vector[i]));
+      double rate = std::max(std::abs(a.point.curvature_rate[i]), std::abs(b.point.curvature_rate[i]));
+      const double r_i = axis_radius[static_cast<size_t>(i)];
+      if (r_i > 1e-12) {
+        const double alpha = axis_phase[static_cast<size_t>(i)];
+        if (angle_inside(alpha, kPi, lo, hi)) k = r * r_i / (speed * speed);
+        if (angle_inside(alpha + kPi / 2, kPi, lo, hi)) rate = r * r_i / (speed * speed * speed);
+        // along_i = -R_i at α + π/2, +R_i at α + 3π/2: t_i = (r·along_i + p·n_i)/speed there.
+        if (angle_inside(alpha + kPi / 2, 2 * kPi, lo, hi)) t = std::max(t, std::abs(-r * r_i + pitch * n[i]) / speed);
+        if (angle_inside(alpha + 3 * kPi / 2, 2 * kPi, lo, hi)) t = std::max(t, std::abs(r * r_i + pitch * n[i]) / speed);
+      }
+      w.tangent[i] = t;
+      w.curvature_vector[i] = k;
+      w.curvature_rate[i] = rate;
+    }
+    return w;
+  }
+
+  // The ramp limits matter on [a, b] only where a ramp can run: within the distance of a ramp
+  // from rest to the bound of the element's ends (junction dips, stops), and the acceleration
+  // only when such a ramp can reach it (BRISK, or Δv > a²/j under SOFT).
+  bool ramp_matters(const Station& a, const Station& b) const {
+    const double v = std::max(a.bound.velocity, b.bound.velocity);
+    if (!std::isfinite(v)) return true;
+    const RampLimits lo{std::min(a.ramp.accel, b.ramp.accel), std::min(a.ramp.jerk, b.ramp.jerk)};
+    const double zone = ramp_distance(0.0, v, lo);
+    return a.s < zone || b.s > length - zone;
+  }
+
+  // Tolerance on the ramp acceleration: a ramp up to v spends only the part of its velocity
+  // change above a²/j at the acceleration limit (SOFT), so the tolerance on the ramp time is
+  // met with a proportionally larger one on the acceleration; infinite when it cannot bind.
+  double accel_tolerance(const Station& a, const Station& b) const {
+    const double v = std::max(a.bound.velocity, b.bound.velocity);
+    const double jerk = std::max(a.ramp.jerk, b.ramp.jerk);
+    const double accel = std::min(a.ramp.accel, b.ramp.accel);
+    if (!std::isfinite(jerk)) return rule.ramp_tolerance;
+    const double at_limit = v - accel * accel / jerk;
+    return at_limit > 0 ? rule.ramp_tolerance * v / at_limit : std::numeric_limits<double>::infinity();
+  }
+
+  bool acceptable(const Station& a, const Station& b, const Station& w) const {
+    if (!close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance)) return false;
+    if (!ramp_matters(a, b)) return true;
+    if (!close_to(w.ramp.jerk, a.ramp.jerk, b.ramp.jerk, rule.ramp_tolerance)) return false;
+    const double tolerance = accel_tolerance(a, b);
+    return tolerance >= 1 || close_to(w.ramp.accel, a.ramp.accel, b.ramp.accel, tolerance);
+  }
+
+  // Appends the stations after `a` up to and including `b`.
+  void refine(const Station& a, Station b, int depth) {
+    const Station w = limits_at(worst_point(a, b));
+    const int budget = rule.max_segments - static_cast<int>(out.size());
+    const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
+    if (!can_split || acceptable(a, b, w)) {
+      b.piece_bound = w.bound;
+      b.piece_ramp = w.ramp;
+      out.push_back(b);
+      return;
+    }
+    // Split at the critical points inside (the pieces become monotone), else in the middle.
+    if (!critical_known) {
+      arc_critical_lengths(arc, length, critical);
+      std::sort(critical.begin(), critical.end());
+      critical_known = true;
+    }
+    const auto first = std::upper_bound(critical.begin(), critical.end(), a.s + rule.min_piece_mm);
+    const auto last = std::lower_bound(critical.begin(), critical.end(), b.s - rule.min_piece_mm);
+    Station from = a;
+    if (first < last) {
+      for (auto it = first; it != last; ++it) {
+        Station at = station(*it);
+        refine(from, at, depth + 1);
+        from = std::move(at);
+      }
+    } else {
+      Station m = station(0.5 * (a.s + b.s));
+      refine(a, m, depth + 1);
+      from = std::move(m);
+    }
+    refine(from, std::move(b), depth + 1);
+  }
+};
+
+}  // namespace
+
+bool discretise_element(const geometry::Curve& curve, double length, double fine_step_mm,
+                        const DiscretisationRule& rule, const PointLimits& limits_at,
+                        std::vector<Station>& out) {
+  out.clear();
+  auto station = [&](double s) {
+    Station st = limits_at(curve.at(s));
+    st.s = s;
+    return st;
+  };
+  out.push_back(station(0.0));
+  const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve);
+  if (rule.equal_segments || !arc || arc->sweep() == 0.0) {
+    // Equal segments; an axial move without sweep has constant limits and gets one.
+    const double step = rule.equal_segments && rule.fixed_segment_mm > 0 ? rule.fixed_segment_mm
+                        : (arc && !rule.equal_segments)                  ? length
+                                                                         : fine_step_mm;
+    const double n = std::clamp(std::ceil(length / step), 1.0, double(rule.max_segments));
+    const double h = length / n;
+    const auto count = static_cast<size_t>(n);
+    for (size_t k = 1; k <= count; ++k) {
+      Station st = station(k == count ? length : h * static_cast<double>(k));
+      const Station& prev = out.back();
+      st.piece_bound = prev.bound.velocity <= st.bound.velocity ? prev.bound : st.bound;
+      st.piece_ramp = {std::min(prev.ramp.accel, st.ramp.accel), std::min(prev.ramp.jerk, st.ramp.jerk)};
+      out.push_back(std::move(st));
+    }
+    return false;
+  }
+  thread_local std::vector<double> critical;
+  critical.clear();
+  ArcRefiner refiner{*arc, length, rule, limits_at, critical, out};
+  refiner.prepare();
+  const Station start = out.back();
+  refiner.refine(start, station(length), 0);
+  return true;
+}
+
+}  // namespace drycut::motion

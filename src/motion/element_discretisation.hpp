@@ -1,0 +1,85 @@
+#pragma once
+// Where the planner puts the nodes of a curved element (arc, helix, spline span, offset curve).
+// On a circle or helix the cost follows the variation of its limits, not its length.
+//
+// RULE
+// ====
+// Every point constraint (path_constraints.hpp) and the ramp limits (tangential_limits) are a
+// minimum over the axes of a function that falls as |t_i|, |κ_i| or |P'''_i| grows. So the
+// worst case of all of them over a stretch of a curve is their value at one synthetic WORST
+// POINT whose components are the per-axis maxima of |t_i|, |κ_i|, |P'''_i| over the stretch.
+//
+// Circles and helices (geometry::ArcCurve: radius r, plane axes e1, e2, normal n, pitch p per
+// radian, φ the angle) have these maxima in closed form:
+//    radial_i(φ) = e1_i cos φ + e2_i sin φ = R_i cos(φ - α_i),  R_i = |(e1_i, e2_i)|,
+//    along_i(φ)  = radial_i'(φ)             = -R_i sin(φ - α_i),
+//    t_i = (r·along_i + p·n_i)/S,  κ_i = -r/S²·radial_i,  P'''_i ∝ r/S³·along_i,  S = sqrt(r²+p²)
+// each is a sinusoid (plus a constant for a helix tangent): its largest magnitude over a swept
+// angle is at an end of the sweep or at an interior extreme, φ = α_i + k·π/2 (the quadrant
+// points in the working plane). An axis along n (Z under G17) is constant.
+//
+// 1. The whole element is ONE piece; its segment gets the limits of its worst point.
+// 2. The piece is accepted when that worst case is within bound_tolerance (2 %) of the better
+//    end's velocity bound (the bound includes F and the short-block limit, so an arc whose
+//    varying limits all stay above F is never cut, however long) and, where a ramp can run
+//    (within the distance of a ramp from rest to the bound from either end of the element),
+//    within ramp_tolerance (5 %) for the ramp jerk and for the ramp acceleration; under SOFT a
+//    ramp up to v is at the acceleration limit only for the part of Δv above a²/j, so there
+//    the acceleration may vary by ramp_tolerance · v / (v - a²/j) (not checked when v <= a²/j).
+// 3. Otherwise it is cut at the CRITICAL angles inside it (the extremes above and, on a helix,
+//    the zeros of t_i, sin(φ - α_i) = p·n_i/(r·R_i)), where every component becomes monotone,
+//    or, when there are none, in halves; the pieces go back to step 2 (min_piece_mm, at most
+//    max_segments per element).
+// Segments of these pieces are timed along the ramp envelope (envelope_segment.hpp), which is
+// what the short equal segments used before converge to.
+//
+// Other curves (spline spans, offset curves) have no closed form; they keep equal segments of
+// h = clamp(v_ref·T_IPO, 0.01 mm, 0.5 mm) (v_ref = F, or the rapid velocity), each with the
+// lower limits of its two end nodes. Their planned times depend on h itself (up to 0.3 %
+// between h and a 0.02 mm reference on the reference experiment's splines, more near stops
+// under SOFT), so a coarser rule would change them.
+//
+// equal_segments replaces all of this by equal segments of fixed_segment_mm (when > 0) or of h
+// for every curve (test references: the former rule, or very fine segments).
+// Lines never come here (one segment).
+#include <functional>
+#include <vector>
+
+#include "interp/path_element.hpp"
+#include "motion/element_dynamics.hpp"
+#include "motion/path_constraints.hpp"
+
+namespace drycut::motion {
+
+// One node candidate: its place on the element and the limits that hold there.
+struct Station {
+  double s = 0;  // arc length from the element's start
+  CurvePoint point;
+  VelocityBound bound;
+  RampLimits ramp;
+  // The worst case over the piece that ends here (the segment's cap and ramp limits).
+  VelocityBound piece_bound;
+  RampLimits piece_ramp;
+};
+
+struct DiscretisationRule {
+  double bound_tolerance = 0.02;
+  double ramp_tolerance = 0.05;
+  double min_piece_mm = 1e-3;
+  bool equal_segments = false;  // reference: equal segments of fixed_segment_mm, or of h
+  double fixed_segment_mm = 0;
+  int max_segments = 20000;
+};
+
+// The limits at a point (the returned station's s is set by the caller).
+using PointLimits = std::function<Station(const CurvePoint& point)>;
+
+// Fills `out` with the stations of a curved element of length `length`, the start (s = 0)
+// first and the end (s = length) last. `limits_at` gives the limits at a point;
+// `fine_step_mm` is h for curves without a closed form. Returns true when the stations are
+// the adaptive pieces (time their segments along the envelope), false for equal segments.
+bool discretise_element(const geometry::Curve& curve, double length, double fine_step_mm,
+                        const DiscretisationRule& rule, const PointLimits& limits_at,
+                        std::vector<Station>& out);
+
+}  // namespace drycut::motion
