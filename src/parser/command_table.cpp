@@ -152,7 +152,7 @@ Support g_code_support(int64_t g) {
     case 5: case 7: case 8: case 25: case 26: case 58: case 59:
     case 74: case 75: case 140: case 141:
     case 142: case 143: case 147: case 148: case 247: case 248: case 290: case 291:
-    case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 621:
+    case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:
     case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
     case 817: case 818: case 819: case 820: case 821: case 822: case 823: case 824: case 825:
     case 826: case 827: case 828: case 829: case 931: case 942: case 952: case 961: case 962:
