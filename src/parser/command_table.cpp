@@ -58,6 +58,18 @@ constexpr std::array kCommands{
     CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", N},
     CommandEntry{"TRAILON", N}, CommandEntry{"TRAILOF", N}, CommandEntry{"COUPON", N},
     CommandEntry{"COUPOF", N},  CommandEntry{"SPCON", N},   CommandEntry{"SPCOF", N},
+    // Corner deceleration, 3-D compensation, orientation and transformation modes, buffer control:
+    // valid on a 5-axis control, their effect on the path is not modelled.
+    CommandEntry{"FENDNORM", N}, CommandEntry{"CUT2DF", N}, CommandEntry{"CUT3DF", N},
+    CommandEntry{"CUT3DFF", N}, CommandEntry{"CUT3DFS", N}, CommandEntry{"ORIEULER", N},
+    CommandEntry{"ORIRPY", N}, CommandEntry{"ORIRPY2", N}, CommandEntry{"ORIPLANE", N},
+    CommandEntry{"ORIC", N}, CommandEntry{"ORID", N}, CommandEntry{"OSOF", N},
+    CommandEntry{"OSC", N}, CommandEntry{"OSS", N}, CommandEntry{"OSSE", N}, CommandEntry{"PTP", N},
+    CommandEntry{"CP", N}, CommandEntry{"PTPG0", N}, CommandEntry{"TRAANG", N},
+    CommandEntry{"TRACON", N}, CommandEntry{"FIFOCTRL", N}, CommandEntry{"DRIVEA", N},
+    CommandEntry{"COMPSURF", N}, CommandEntry{"WAITMC", N}, CommandEntry{"WAITE", N},
+    CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
+    CommandEntry{"ORIPATH", N}, CommandEntry{"ORIPATHS", N}, CommandEntry{"STOPREOF", N},
     CommandEntry{"FA", M},      CommandEntry{"DYNPREC", N},
     // Valid, and modelled by doing nothing: they change display, single-block or buffer
     // behaviour, nothing a dry run measures.
