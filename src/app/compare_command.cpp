@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "app/output_file.hpp"
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/report_command.hpp"
@@ -18,13 +19,6 @@ struct CompareOptions {
   std::string json_file;
   std::string html_file;
 };
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write " + path);
-}
 
 }  // namespace
 
@@ -73,9 +67,9 @@ void register_compare(CLI::App& app) {
         rows.push_back(std::move(row));
       }
       std::fputs(report::compare_table_text(rows).c_str(), stdout);
-      if (!o->json_file.empty()) write_file(o->json_file, report::compare_json(rows));
+      if (!o->json_file.empty()) write_output_file(o->json_file, report::compare_json(rows));
       if (!o->html_file.empty())
-        write_file(o->html_file, report::render_compare_report(rows, reference ? reference->outline
+        write_output_file(o->html_file, report::render_compare_report(rows, reference ? reference->outline
                                                                                : std::vector<std::pair<double, double>>{},
                                                                reference ? reference->name : ""));
       throw ExitRequest{any_alarm ? kExitAlarm : kExitOk};

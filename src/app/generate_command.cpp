@@ -6,6 +6,7 @@
 #include <memory>
 #include <numbers>
 
+#include "app/output_file.hpp"
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/curve_options.hpp"
@@ -33,19 +34,12 @@ struct GenerateOptions {
   std::string tool = "FR_4";
 };
 
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw UsageError("cannot write " + path.string());
-  out << text;
-  if (!out) throw UsageError("error writing " + path.string());
-}
-
 int generate_thesis(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   size_t files = 0;
   for (const auto& p : workload::thesis_programs()) {
-    write_file(dir / p.main.file_name, p.main.text);
-    write_file(dir / p.sub.file_name, p.sub.text);
+    write_output_file(dir / p.main.file_name, p.main.text);
+    write_output_file(dir / p.sub.file_name, p.sub.text);
     files += 2;
   }
   std::printf("wrote %zu files to %s\n", files, dir.string().c_str());
@@ -82,8 +76,8 @@ int generate_one(const GenerateOptions& o) {
   const auto program = workload::write_contour_program(knots, curve.t_end - curve.t_begin, spec);
   const std::filesystem::path dir(o.out_dir);
   std::filesystem::create_directories(dir);
-  write_file(dir / (spec.main_name + ".MPF"), program.main_text);
-  write_file(dir / (spec.sub_name + ".SPF"), program.sub_text);
+  write_output_file(dir / (spec.main_name + ".MPF"), program.main_text);
+  write_output_file(dir / (spec.sub_name + ".SPF"), program.sub_text);
   std::printf("%zu knots per loop; wrote %s and %s (%zu + %zu bytes)\n", knots.size(),
               (dir / (spec.main_name + ".MPF")).string().c_str(), (dir / (spec.sub_name + ".SPF")).string().c_str(),
               program.main_text.size(), program.sub_text.size());

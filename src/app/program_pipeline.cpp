@@ -16,6 +16,10 @@ namespace drycut::app {
 
 void add_program_options(CLI::App& cmd, ProgramOptions& options) {
   cmd.add_option("PROGRAM", options.program, "Main program (.MPF)")->required();
+  add_run_options(cmd, options);
+}
+
+void add_run_options(CLI::App& cmd, ProgramOptions& options) {
   cmd.add_option("--search-path", options.search_path,
                  "Folder searched for subprograms after the main program's folder (repeatable)");
   cmd.add_option("--definitions", options.definition_dirs,

@@ -30,6 +30,8 @@ struct ProgramOptions {
 // Adds PROGRAM, --search-path, --definitions, --no-standard-cycles, --machine, --tools,
 // --max-steps, --missing-programs to a subcommand.
 void add_program_options(CLI::App& cmd, ProgramOptions& options);
+// The same options without PROGRAM, for commands that run many programs (regress).
+void add_run_options(CLI::App& cmd, ProgramOptions& options);
 
 // `--missing-programs alarm|warn` (default alarm): whether calling a subprogram that is in no
 // searched folder stops the run with the control's alarm, or only warns (for programs checked

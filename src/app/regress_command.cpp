@@ -13,6 +13,7 @@
 #include <sstream>
 #include <thread>
 
+#include "app/output_file.hpp"
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "app/program_discovery.hpp"
@@ -35,13 +36,6 @@ struct RegressOptions {
   std::string junit_file;
   std::string tolerance;
 };
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) throw UsageError("cannot write " + path);
-}
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -93,7 +87,7 @@ void write_junit(const std::string& path, const std::vector<RegressResult>& resu
   for (const auto& r : results) run.insert(r.figures.program);
   for (const auto& change : changes)
     if (!run.count(change.program)) cases.push_back({change.program, junit_classname(change.program), 0, {change.message()}});
-  write_file(path, report::junit_xml("drycut regress", cases));
+  write_output_file(path, report::junit_xml("drycut regress", cases));
 }
 
 int run_regress(const RegressOptions& o) {
@@ -118,7 +112,7 @@ int run_regress(const RegressOptions& o) {
   report::Baseline now{profile.name, {}};
   for (const auto& r : results) now.programs.push_back(r.figures);
   if (o.update) {
-    write_file(o.baseline_file, report::baseline_json(now));
+    write_output_file(o.baseline_file, report::baseline_json(now));
     if (!o.junit_file.empty()) write_junit(o.junit_file, results, {});
     std::printf("regress: baseline %s written, %zu programs\n", o.baseline_file.c_str(), results.size());
     return kExitOk;
@@ -149,16 +143,7 @@ void register_regress(CLI::App& app) {
   cmd->add_option("--junit", o->junit_file, "Write a JUnit XML report (one test case per program)");
   cmd->add_option("--tolerance", o->tolerance,
                   "Allowed differences, e.g. time=2%,feed=5%,length=0.1%,dips=0 (these are the defaults)");
-  cmd->add_option("--search-path", o->program.search_path, "Folder searched for subprograms (repeatable)");
-  cmd->add_option("--definitions", o->program.definition_dirs, "Folder of definition files (.DEF) (repeatable)");
-  cmd->add_flag("--no-standard-cycles", o->program.no_standard_cycles,
-                "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
-  cmd->add_option("--machine", o->program.machine_file, "Machine profile JSON (default: the embedded profile)");
-  cmd->add_option("--tools", o->program.tools_file, "Tool table (.csv or .json) replacing the profile's tools");
-  cmd->add_option("--max-steps", o->program.max_steps, "Blocks executed before a run is stopped as an endless loop")
-      ->default_val(o->program.max_steps);
-  cmd->add_flag("-q,--quiet", o->program.quiet, "No progress display");
-  add_missing_programs_option(*cmd, o->program.missing_programs_warn);
+  add_run_options(*cmd, o->program);  // --search-path, --machine, --tools ... as for one program
   cmd->callback([o] {
     try {
       throw ExitRequest{run_regress(*o)};

@@ -8,13 +8,6 @@ namespace {
 
 using parser::ValueMode;
 
-// x reduced into [0, range).
-double wrap(double x, double range) {
-  double r = std::fmod(x, range);
-  if (r < 0) r += range;
-  return r >= range ? 0.0 : r;
-}
-
 bool is_direction_mode(ValueMode mode) {
   return mode == ValueMode::Direct || mode == ValueMode::AbsolutePositive || mode == ValueMode::AbsoluteNegative;
 }
@@ -42,6 +35,12 @@ double way(double p, double t, double range, ValueMode mode) {
 }
 
 }  // namespace
+
+double wrap_modulo(double x, double range) {
+  double r = std::fmod(x, range);
+  if (r < 0) r += range;
+  return r >= range ? 0.0 : r;
+}
 
 ExtraAxes::ExtraAxes(const machine::MachineProfile& profile)
     : axes_(profile.extra_axes),
@@ -74,7 +73,7 @@ ExtraAxes::Travel ExtraAxes::travel_to(size_t i, double value, ValueMode mode, b
                  std::to_string(range);
       return t;
     }
-    t.travel = way(wrap(p, range), wrap(value, range), range, mode);
+    t.travel = way(wrap_modulo(p, range), wrap_modulo(value, range), range, mode);
     return t;
   }
   const double scale = a.rotary ? 1.0 : unit;
@@ -83,7 +82,7 @@ ExtraAxes::Travel ExtraAxes::travel_to(size_t i, double value, ValueMode mode, b
     t.travel = value * scale;
   } else if (a.modulo) {
     const bool shortest = (a.misc_function_mask & 0x4) != 0;
-    t.travel = way(p, wrap(value, a.modulo_range), a.modulo_range, shortest ? ValueMode::Direct : ValueMode::Absolute);
+    t.travel = way(p, wrap_modulo(value, a.modulo_range), a.modulo_range, shortest ? ValueMode::Direct : ValueMode::Absolute);
   } else {
     t.travel = value * scale - p;
   }
@@ -92,7 +91,7 @@ ExtraAxes::Travel ExtraAxes::travel_to(size_t i, double value, ValueMode mode, b
 
 void ExtraAxes::move(size_t i, double travel) {
   const machine::AxisData& a = axes_[i];
-  position_[i] = a.modulo ? wrap(position_[i] + travel, a.modulo_range) : position_[i] + travel;
+  position_[i] = a.modulo ? wrap_modulo(position_[i] + travel, a.modulo_range) : position_[i] + travel;
 }
 
 std::string ExtraAxes::set_feed_group(const std::vector<std::string>& names) {

@@ -30,6 +30,9 @@
 
 namespace drycut::interp {
 
+// x reduced into [0, range) (a modulo axis's position, a spindle angle).
+double wrap_modulo(double x, double range);
+
 class ExtraAxes {
  public:
   explicit ExtraAxes(const machine::MachineProfile& profile);

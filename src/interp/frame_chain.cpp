@@ -1,5 +1,7 @@
 #include "interp/frame_chain.hpp"
 
+#include "interp/frame_components.hpp"
+
 namespace drycut::interp {
 
 const Frame FrameChain::kIdentity{};
@@ -23,14 +25,8 @@ bool profile_has_settable_frame(const machine::MachineProfile& profile, int inde
 }
 
 Frame profile_settable_frame(const machine::MachineProfile& profile, int index) {
-  const std::string name = settable_frame_name(index);
-  Frame frame;
   // Within one frame the translation is outermost and the rotation acts inside it.
-  if (auto it = profile.work_offsets.find(name); it != profile.work_offsets.end())
-    frame = Frame::translation(it->second);
-  if (auto it = profile.work_offset_rotations_deg.find(name); it != profile.work_offset_rotations_deg.end())
-    frame = frame.then(Frame::rotation_rpy(it->second));
-  return frame;
+  return profile_frame_components(profile, index).frame();
 }
 
 Frame instruction_frame(FrameInstruction kind, const FrameInstructionWords& words, int plane_normal_axis) {

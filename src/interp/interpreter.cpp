@@ -27,9 +27,9 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       position_(profile.start_position),
       extra_axes_(profile) {
   for (int i = 0; i < kSettableFrames; ++i) {
-    settable_frames_[static_cast<size_t>(i)] = profile_settable_frame(profile, i);
-    settable_defined_[static_cast<size_t>(i)] = profile_has_settable_frame(profile, i);
     settable_components_[static_cast<size_t>(i)] = profile_frame_components(profile, i);
+    settable_frames_[static_cast<size_t>(i)] = settable_components_[static_cast<size_t>(i)].frame();
+    settable_defined_[static_cast<size_t>(i)] = profile_has_settable_frame(profile, i);
   }
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;

@@ -19,11 +19,6 @@ using namespace detail;
 namespace {
 
 
-double wrap_turn(double degrees) {
-  const double r = std::fmod(degrees, 360.0);
-  return r < 0 ? r + 360.0 : r;
-}
-
 std::vector<std::string> text_args(const parser::CommandWord& c) {
   std::vector<std::string> out;
   for (const auto& a : c.args)
@@ -160,13 +155,13 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     m.travel = kTurn / 2;
   } else {
     const ValueMode mode = w.mode == ValueMode::Default || w.mode == ValueMode::Absolute ? ValueMode::Direct : w.mode;
-    double d = wrap_turn(w.value) - spindle_angle_;
+    double d = wrap_modulo(w.value, kTurn) - spindle_angle_;
     if (d < 0) d += kTurn;  // now the positive way in [0, 360)
     if (mode == ValueMode::AbsoluteNegative && d > 0) d = kTurn - d;
     if (mode == ValueMode::Direct && d > kTurn / 2) d = kTurn - d;
     m.travel = d;
   }
-  spindle_angle_ = wrap_turn(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value);
+  spindle_angle_ = wrap_modulo(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value, kTurn);
   state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
   m.block_synchronous = w.kind == AxisWordKind::SPos;
   if (!m.block_synchronous) extra_axes_.mark_running(name);

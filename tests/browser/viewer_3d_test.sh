@@ -13,22 +13,7 @@ set -euo pipefail
 
 drycut="${1:?usage: viewer_3d_test.sh PATH/TO/drycut}"
 
-if [[ "${DRYCUT_NO_BROWSER:-}" == "1" ]]; then
-  echo "SKIPPED: DRYCUT_NO_BROWSER=1 is set"
-  exit 77
-fi
-browser=""
-for candidate in chromium chromium-browser google-chrome; do
-  if command -v "$candidate" >/dev/null 2>&1; then
-    browser="$(command -v "$candidate")"
-    break
-  fi
-done
-if [[ -z "$browser" ]]; then
-  echo "FAILED: no Chromium found (install it: scripts/setup-debian.sh --with-browser;" \
-       "or set DRYCUT_NO_BROWSER=1 to skip this test explicitly)"
-  exit 1
-fi
+source "$(dirname "$0")/find_browser.sh"
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

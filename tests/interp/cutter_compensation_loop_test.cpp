@@ -21,16 +21,7 @@ using geometry::Vec3;
 using test::Comp;
 using test::line;
 
-struct StageRun {
-  machine::MachineProfile profile = test::test_profile();
-  Diagnostics diagnostics;
-  test::CollectingSink sink;
-  CutterCompensation stage{sink, profile, diagnostics};
-  void feed(std::vector<PathElement> elements) {
-    for (auto& e : elements) stage.consume(std::move(e));
-    stage.finish();
-  }
-};
+using test::StageRun;
 
 PathElement parabola_span(double x0, double x1, const Comp& comp, uint32_t block_line) {
   return test::motion(std::make_shared<test::ParabolaCurve>(0.5, x0, x1), ElementKind::SplineSpan, comp, block_line);

@@ -29,16 +29,7 @@ using test::line;
 using Point2 = Eigen::Vector2d;
 constexpr double kPi = std::numbers::pi;
 
-struct StageRun {
-  machine::MachineProfile profile = test::test_profile();
-  Diagnostics diagnostics;
-  test::CollectingSink sink;
-  CutterCompensation stage{sink, profile, diagnostics};
-  void feed(std::vector<PathElement> elements) {
-    for (auto& e : elements) stage.consume(std::move(e));
-    stage.finish();
-  }
-};
+using test::StageRun;
 
 Point2 xy(const Vec3& p) { return {p.x(), p.y()}; }
 

@@ -19,16 +19,7 @@ using test::Comp;
 using test::line;
 constexpr double kPi = std::numbers::pi;
 
-struct StageRun {
-  machine::MachineProfile profile = test::test_profile();
-  Diagnostics diagnostics;
-  test::CollectingSink sink;
-  CutterCompensation stage{sink, profile, diagnostics};
-  void feed(std::vector<PathElement> elements) {
-    for (auto& e : elements) stage.consume(std::move(e));
-    stage.finish();
-  }
-};
+using test::StageRun;
 
 void expect_line(const PathElement& e, Vec3 a, Vec3 b, uint32_t block_line) {
   EXPECT_EQ(e.kind, ElementKind::Line);

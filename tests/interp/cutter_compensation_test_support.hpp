@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "interp/cutter_compensation.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
 #include "interp/path_element.hpp"
@@ -107,5 +108,17 @@ inline machine::MachineProfile test_profile() {
   p.cutcom_maxnum_dummy_blocks = 3;
   return p;
 }
+
+// The compensation stage alone on a hand-built stream, collecting what it emits.
+struct StageRun {
+  machine::MachineProfile profile = test_profile();
+  Diagnostics diagnostics;
+  CollectingSink sink;
+  interp::CutterCompensation stage{sink, profile, diagnostics};
+  void feed(std::vector<interp::PathElement> elements) {
+    for (auto& e : elements) stage.consume(std::move(e));
+    stage.finish();
+  }
+};
 
 }  // namespace drycut::test
