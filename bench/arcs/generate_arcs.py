@@ -4,6 +4,7 @@
 Usage: generate_arcs.py KIND BLOCKS DIALECT FILE [SEED]
   KIND    = mixed   60 % G2/G3, 20 % helical G2/G3 (Z), 20 % G1
             helix   70 % helical, 20 % G2/G3, 10 % G1
+            arcs    100 % G2/G3 in the plane (the element-kind table of bench/throughput)
   DIALECT = sinumerik  `G64 SOFT` header (drycut)
             rs274      plain RS274 header without SOFT (LinuxCNC rs274; drycut reads it too)
   SEED    = random seed (default 17): the same seed gives the same path in both dialects.
@@ -27,7 +28,7 @@ def main():
         sys.exit(__doc__)
     kind, blocks, dialect, path = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[4]
     seed = int(sys.argv[5]) if len(sys.argv) > 5 else 17
-    shares = {"mixed": (0.6, 0.2, 0.2), "helix": (0.2, 0.7, 0.1)}[kind]
+    shares = {"mixed": (0.6, 0.2, 0.2), "helix": (0.2, 0.7, 0.1), "arcs": (1.0, 0.0, 0.0)}[kind]
     rng = random.Random(seed)
     out = []
     if dialect == "sinumerik":

@@ -58,6 +58,39 @@ bool close_to(double worst, double a, double b, double tolerance) {
   return worst >= best * (1.0 - tolerance);
 }
 
+// The ramp limits matter on [a, b] only where a ramp can run: within the distance of a ramp
+// from rest to the bound of the element's ends (junction dips, stops), and the acceleration
+// only when such a ramp can reach it (BRISK, or Δv > a²/j under SOFT).
+bool ramp_matters(double length, const Station& a, const Station& b) {
+  const double v = std::max(a.bound.velocity, b.bound.velocity);
+  if (!std::isfinite(v)) return true;
+  const RampLimits lo{std::min(a.ramp.accel, b.ramp.accel), std::min(a.ramp.jerk, b.ramp.jerk)};
+  const double zone = ramp_distance(0.0, v, lo);
+  return a.s < zone || b.s > length - zone;
+}
+
+// Tolerance on the ramp acceleration: a ramp up to v spends only the part of its velocity
+// change above a²/j at the acceleration limit (SOFT), so the tolerance on the ramp time is
+// met with a proportionally larger one on the acceleration; infinite when it cannot bind.
+double accel_tolerance(const DiscretisationRule& rule, const Station& a, const Station& b) {
+  const double v = std::max(a.bound.velocity, b.bound.velocity);
+  const double jerk = std::max(a.ramp.jerk, b.ramp.jerk);
+  const double accel = std::min(a.ramp.accel, b.ramp.accel);
+  if (!std::isfinite(jerk)) return rule.ramp_tolerance;
+  const double at_limit = v - accel * accel / jerk;
+  return at_limit > 0 ? rule.ramp_tolerance * v / at_limit : std::numeric_limits<double>::infinity();
+}
+
+// Step 2 of the rule: the piece [a, b] with worst case w keeps its limits within tolerance.
+bool piece_acceptable(const DiscretisationRule& rule, double length, const Station& a, const Station& b,
+                      const Station& w) {
+  if (!close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance)) return false;
+  if (!ramp_matters(length, a, b)) return true;
+  if (!close_to(w.ramp.jerk, a.ramp.jerk, b.ramp.jerk, rule.ramp_tolerance)) return false;
+  const double tolerance = accel_tolerance(rule, a, b);
+  return tolerance >= 1 || close_to(w.ramp.accel, a.ramp.accel, b.ramp.accel, tolerance);
+}
+
 struct ArcRefiner {
   const geometry::ArcCurve& arc;
   double length;
@@ -113,35 +146,8 @@ struct ArcRefiner {
     return w;
   }
 
-  // The ramp limits matter on [a, b] only where a ramp can run: within the distance of a ramp
-  // from rest to the bound of the element's ends (junction dips, stops), and the acceleration
-  // only when such a ramp can reach it (BRISK, or Δv > a²/j under SOFT).
-  bool ramp_matters(const Station& a, const Station& b) const {
-    const double v = std::max(a.bound.velocity, b.bound.velocity);
-    if (!std::isfinite(v)) return true;
-    const RampLimits lo{std::min(a.ramp.accel, b.ramp.accel), std::min(a.ramp.jerk, b.ramp.jerk)};
-    const double zone = ramp_distance(0.0, v, lo);
-    return a.s < zone || b.s > length - zone;
-  }
-
-  // Tolerance on the ramp acceleration: a ramp up to v spends only the part of its velocity
-  // change above a²/j at the acceleration limit (SOFT), so the tolerance on the ramp time is
-  // met with a proportionally larger one on the acceleration; infinite when it cannot bind.
-  double accel_tolerance(const Station& a, const Station& b) const {
-    const double v = std::max(a.bound.velocity, b.bound.velocity);
-    const double jerk = std::max(a.ramp.jerk, b.ramp.jerk);
-    const double accel = std::min(a.ramp.accel, b.ramp.accel);
-    if (!std::isfinite(jerk)) return rule.ramp_tolerance;
-    const double at_limit = v - accel * accel / jerk;
-    return at_limit > 0 ? rule.ramp_tolerance * v / at_limit : std::numeric_limits<double>::infinity();
-  }
-
   bool acceptable(const Station& a, const Station& b, const Station& w) const {
-    if (!close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance)) return false;
-    if (!ramp_matters(a, b)) return true;
-    if (!close_to(w.ramp.jerk, a.ramp.jerk, b.ramp.jerk, rule.ramp_tolerance)) return false;
-    const double tolerance = accel_tolerance(a, b);
-    return tolerance >= 1 || close_to(w.ramp.accel, a.ramp.accel, b.ramp.accel, tolerance);
+    return piece_acceptable(rule, length, a, b, w);
   }
 
   // Appends the stations after `a` up to and including `b`.
@@ -179,6 +185,62 @@ struct ArcRefiner {
   }
 };
 
+
+// Curves without a closed form (spline spans, offset curves): the worst case of a piece is that
+// of the per-axis largest |t_i|, |κ_i|, |P'''_i| (and curvature) of its ends and its midpoint;
+// a piece whose limits vary beyond the tolerances is halved (the midpoint becomes a node).
+struct SampledRefiner {
+  const geometry::Curve& curve;
+  double length;
+  const DiscretisationRule& rule;
+  const PointLimits& limits_at;
+  std::vector<Station>& out;
+
+  Station station(double s) const {
+    Station st = limits_at(curve.at(s));
+    st.s = s;
+    return st;
+  }
+
+  // The tangent turns by at most max_sampled_turn from a to m and from m to b: the per-axis
+  // components then behave like cos/sin over a small angle, and an extreme between the samples
+  // exceeds the nearest sample by at most 1 - cos(turn/2) (0.03 % at 0.05 rad).
+  bool turns_little(const Station& a, const Station& m, const Station& b) const {
+    const double c = std::cos(rule.max_sampled_turn);
+    return a.point.tangent.dot(m.point.tangent) >= c && m.point.tangent.dot(b.point.tangent) >= c;
+  }
+
+  static CurvePoint worst_point(const Station& a, const Station& m, const Station& b) {
+    CurvePoint w = m.point;
+    const CurvePoint* p[3] = {&a.point, &m.point, &b.point};
+    for (int i = 0; i < 3; ++i) {
+      for (const CurvePoint* q : p) {
+        w.tangent[i] = std::max(w.tangent[i], std::abs(q->tangent[i]));
+        w.curvature_vector[i] = std::max(w.curvature_vector[i], std::abs(q->curvature_vector[i]));
+        w.curvature_rate[i] = std::max(w.curvature_rate[i], std::abs(q->curvature_rate[i]));
+      }
+    }
+    w.curvature = std::max({a.point.curvature, m.point.curvature, b.point.curvature});
+    return w;
+  }
+
+  void refine(const Station& a, Station b, int depth) {
+    Station m = station(0.5 * (a.s + b.s));
+    const Station w = limits_at(worst_point(a, m, b));
+    const int budget = rule.max_segments - static_cast<int>(out.size());
+    const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
+    if (!can_split || (turns_little(a, m, b) && piece_acceptable(rule, length, a, b, w))) {
+      b.piece_bound = w.bound;
+      b.piece_ramp = w.ramp;
+      out.push_back(std::move(b));
+      return;
+    }
+    refine(a, m, depth + 1);
+    const Station from = out.back();
+    refine(from, std::move(b), depth + 1);
+  }
+};
+
 }  // namespace
 
 bool discretise_element(const geometry::Curve& curve, double length, double fine_step_mm,
@@ -192,6 +254,15 @@ bool discretise_element(const geometry::Curve& curve, double length, double fine
   };
   out.push_back(station(0.0));
   const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve);
+  if (!rule.equal_segments && !arc && length > fine_step_mm) {
+    DiscretisationRule sampled = rule;
+    sampled.bound_tolerance = rule.sampled_bound_tolerance;
+    sampled.ramp_tolerance = rule.sampled_ramp_tolerance;
+    SampledRefiner refiner{curve, length, sampled, limits_at, out};
+    const Station start = out.back();
+    refiner.refine(start, station(length), 0);
+    return true;
+  }
   if (rule.equal_segments || !arc || arc->sweep() == 0.0) {
     // Equal segments; an axial move without sweep has constant limits and gets one.
     const double step = rule.equal_segments && rule.fixed_segment_mm > 0 ? rule.fixed_segment_mm

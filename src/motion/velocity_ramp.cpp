@@ -66,6 +66,18 @@ double ramp_reach(double v0, double distance, RampLimits l) {
   return v0 + dv;
 }
 
+double reach_upper_bound(double v0, double distance, RampLimits l) {
+  if (distance <= 0) return v0;
+  const double brisk = std::sqrt(v0 * v0 + 2.0 * l.accel * distance);
+  if (!has_jerk_limit(l)) return brisk;
+  double bound = brisk;
+  if (v0 > 0) {
+    const double u = distance / (2.0 * v0);
+    bound = std::min(bound, v0 + l.jerk * u * u);
+  }
+  return bound * (1.0 + 1e-12);
+}
+
 SegmentProfile plan_segment(double v0, double v1, double cap, double length, RampLimits l) {
   SegmentProfile p;
   p.v0 = v0;

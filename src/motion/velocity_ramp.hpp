@@ -25,6 +25,12 @@ double ramp_time(double v0, double v1, RampLimits limits);
 double ramp_distance(double v0, double v1, RampLimits limits);
 // Highest velocity reachable from v0 over `distance` (the inverse of ramp_distance).
 double ramp_reach(double v0, double distance, RampLimits limits);
+// An upper bound of ramp_reach that costs one square root (relative margin 1e-12 above the
+// rounding of ramp_reach). Under SOFT the ramp's distance D = (v0 + v1)/2 · T with
+// T >= (v1 - v0)/a gives v1 <= sqrt(v0² + 2·a·D), and T >= 2·sqrt(Δv/j) (both regimes, by
+// AM-GM on Δv/a + a/j) gives Δv <= j·(D / (2·v0))²; the bound is the lower of the two.
+// Under BRISK it is the reach itself.
+double reach_upper_bound(double v0, double distance, RampLimits limits);
 
 // One phase of constant jerk; the acceleration at its start is given (BRISK steps it).
 struct ProfilePhase {

@@ -204,26 +204,83 @@ TEST(ArcDiscretisation, ArcTimesEqualTheEqualSegmentReference) {
   }
 }
 
+// A tangent-continuous chain of cubic Hermite spans in the XY plane (a wave of random
+// amplitude and wavelength), `count` spans of `span_mm` each, F varying per span.
+std::vector<interp::PathElement> hermite_wave(std::mt19937& rng, Mode mode, int count, double span_mm) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double amplitude = 0.5 + 3 * u01(rng), wavelength = 3 + 30 * u01(rng);
+  auto y = [&](double x) { return amplitude * std::sin(2 * M_PI * x / wavelength); };
+  auto dy = [&](double x) { return amplitude * 2 * M_PI / wavelength * std::cos(2 * M_PI * x / wavelength); };
+  std::vector<interp::PathElement> out;
+  for (int k = 0; k < count; ++k) {
+    const double x0 = span_mm * k, x1 = span_mm * (k + 1);
+    const Vec3 p0(x0, y(x0), 0), p1(x1, y(x1), 0);
+    const double h = (p1 - p0).norm();  // chord parametrisation, as the spline builders
+    const Vec3 m0 = Vec3(1, dy(x0), 0).normalized(), m1 = Vec3(1, dy(x1), 0).normalized();
+    auto span = std::make_shared<geometry::PolynomialSpan>(geometry::PolynomialSpan::hermite(p0, p1, m0, m1, h));
+    out.push_back(motion(span, 1500 + 4500 * u01(rng), mode, ElementKind::SplineSpan, k));
+  }
+  return out;
+}
+
 TEST(ArcDiscretisation, SplineTimesEqualAFineSegmentReference) {
-  // Spline spans keep equal segments of h = clamp(F·T_IPO, 0.01, 0.5) mm: under BRISK within
-  // 0.1 % of a 0.002 mm reference on a smooth Hermite chain (a wave, tangent-continuous). Under
-  // SOFT equal segments converge only like h^(1/3) near a standstill (envelope_segment.hpp),
-  // so no fine reference holds them to 0.1 %: that is why they keep their h.
-  for (bool soft : {false}) {
-    std::vector<interp::PathElement> elements;
-    for (int k = 0; k < 12; ++k) {
-      const double x0 = 5.0 * k, x1 = 5.0 * (k + 1);
-      const Vec3 p0(x0, 2 * std::sin(x0 / 5), 0), p1(x1, 2 * std::sin(x1 / 5), 0);
-      const Vec3 m0(1, 0.4 * std::cos(x0 / 5), 0), m1(1, 0.4 * std::cos(x1 / 5), 0);
-      auto span = std::make_shared<geometry::PolynomialSpan>(geometry::PolynomialSpan::hermite(p0, p1, 5 * m0, 5 * m1, 1.0));
-      elements.push_back(motion(span, 3000 + 500 * (k % 3), Mode{.soft = soft}, ElementKind::SplineSpan, k));
+  // Spline spans are sampled pieces timed along the envelope; under BRISK the envelope is exact,
+  // so the time is within 0.1 % of a 0.002 mm equal-segment reference (a wave, tangent-continuous).
+  std::vector<interp::PathElement> elements;
+  for (int k = 0; k < 12; ++k) {
+    const double x0 = 5.0 * k, x1 = 5.0 * (k + 1);
+    const Vec3 p0(x0, 2 * std::sin(x0 / 5), 0), p1(x1, 2 * std::sin(x1 / 5), 0);
+    const Vec3 m0(1, 0.4 * std::cos(x0 / 5), 0), m1(1, 0.4 * std::cos(x1 / 5), 0);
+    auto span = std::make_shared<geometry::PolynomialSpan>(geometry::PolynomialSpan::hermite(p0, p1, 5 * m0, 5 * m1, 1.0));
+    elements.push_back(motion(span, 3000 + 500 * (k % 3), Mode{.soft = false}, ElementKind::SplineSpan, k));
+  }
+  const double adaptive = planned_time(plain_profile(), elements, -1);
+  const double reference = planned_time(plain_profile(), elements, 0.002);
+  EXPECT_NEAR(adaptive, reference, 1e-3 * reference);
+}
+
+TEST(ArcDiscretisation, SplineTimesEqualTheirReference) {
+  // The sampled pieces (element_discretisation.hpp) within 0.1 % of a reference, under G64/G60,
+  // on spans longer than h whose limits vary inside (a wave with curvature radii down to
+  // 0.1 mm; spans not longer than h keep the former single segment). Under SOFT the reference is the
+  // former rule, equal segments of h = clamp(F·T_IPO, 0.01, 0.5) mm (near a standstill equal
+  // segments converge only like h^(1/3), and the envelope keeps the times of h there); under
+  // BRISK the envelope is exact and the reference is 0.005 mm segments (h itself is up to
+  // 0.7 % slow there on 8 mm spans stopping at G60).
+  std::mt19937 rng(1717);
+  const Mode modes[] = {Mode{.soft = true}, Mode{.soft = false}, Mode{.soft = false, .exact_stop = true},
+                        Mode{.soft = true, .exact_stop = true}};
+  for (const Mode& mode : modes) {
+    for (double span_mm : {2.0, 8.0}) {
+      auto profile = plain_profile();
+      profile.path_jerk_mm_s3 = 20000;
+      const auto elements = hermite_wave(rng, mode, 12, span_mm);
+      const double adaptive = planned_time(profile, elements, -1);
+      const double reference = planned_time(profile, elements, mode.soft ? 0.0 : 0.005);
+      EXPECT_GT(adaptive, 0.0);
+      EXPECT_NEAR(adaptive, reference, 1e-3 * reference)
+          << "soft " << mode.soft << " G60 " << mode.exact_stop << " span " << span_mm;
     }
-    const double adaptive = planned_time(plain_profile(), elements, -1);
-    const double reference = planned_time(plain_profile(), elements, 0.002);
-    EXPECT_NEAR(adaptive, reference, 1e-3 * reference) << "soft " << soft;
   }
 }
 
+TEST(ArcDiscretisation, ASplineSpanAtTheFeedIsOneSegment) {
+  // Spans of 3 mm at F1200 (h = 0.08 mm) on a gentle wave, where F binds everywhere: one
+  // segment each (40 spans: at most 41 nodes), not ceil(L/h) = 38.
+  Recorder rec;
+  Planner planner(plain_profile(), rec);
+  for (int k = 0; k < 40; ++k) {
+    const double x0 = 3.0 * k, x1 = 3.0 * (k + 1);
+    const Vec3 p0(x0, 0.05 * std::sin(x0 / 40), 0), p1(x1, 0.05 * std::sin(x1 / 40), 0);
+    const Vec3 m0 = Vec3(1, 0.05 / 40 * std::cos(x0 / 40), 0).normalized();
+    const Vec3 m1 = Vec3(1, 0.05 / 40 * std::cos(x1 / 40), 0).normalized();
+    auto span = std::make_shared<geometry::PolynomialSpan>(geometry::PolynomialSpan::hermite(p0, p1, m0, m1, (p1 - p0).norm()));
+    planner.consume(motion(span, 1200, Mode{.soft = true}, ElementKind::SplineSpan, k));
+  }
+  EXPECT_LE(planner.peak_window_nodes(), 41u);
+  planner.finish();
+  EXPECT_GT(planner.summary().time_s, 120.0 / 20.0);
+}
 
 TEST(ArcDiscretisation, SamplesOnArcsStayWithinTheAxisLimits) {
   // Every IPO sample of random arc chains (envelope segments) keeps each axis velocity and

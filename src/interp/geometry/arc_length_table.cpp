@@ -12,7 +12,9 @@ constexpr std::array<double, 5> kNodes{-0.9061798459386640, -0.5384693101056831,
                                        0.5384693101056831, 0.9061798459386640};
 constexpr std::array<double, 5> kWeights{0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                          0.4786286704993665, 0.2369268850561891};
-constexpr int kInitialIntervals = 4;
+// Two, not more: a spline span's speed is smooth, so most spans are accepted at the first
+// halving (6 five-node integrals, the span's main construction cost).
+constexpr int kInitialIntervals = 2;
 constexpr int kMaxDepth = 30;
 // A span whose speed has a cusp (repeated control points, weights) never meets the tolerance
 // near it; without a bound on the intervals the depth limit alone allows 2^30 of them (a hang
@@ -33,19 +35,21 @@ ArcLengthTable::ArcLengthTable(const Speed& speed, double u_begin, double u_end)
   u_.push_back(u_begin);
   s_.push_back(0.0);
   if (!(u_end > u_begin)) return;
+  // The first intervals' values are the first estimate of the length and the stack's start.
   const double step = (u_end - u_begin) / kInitialIntervals;
+  struct Interval { double a, b, whole; int depth; };
+  std::array<Interval, kInitialIntervals> initial{};
   double estimate = 0.0;
-  for (int i = 0; i < kInitialIntervals; ++i) estimate += gauss5(speed, u_begin + i * step, u_begin + (i + 1) * step);
+  for (int i = 0; i < kInitialIntervals; ++i) {
+    const double a = u_begin + i * step;
+    const double b = i + 1 == kInitialIntervals ? u_end : a + step;
+    initial[static_cast<size_t>(i)] = {a, b, gauss5(speed, a, b), 0};
+    estimate += initial[static_cast<size_t>(i)].whole;
+  }
   const double tol = 1e-11 * std::max(estimate, 1e-300);
 
   // Depth-first over intervals, left to right, so accepted ends come out in order.
-  struct Interval { double a, b, whole; int depth; };
-  std::vector<Interval> stack;
-  for (int i = kInitialIntervals - 1; i >= 0; --i) {
-    const double a = u_begin + i * step;
-    const double b = i + 1 == kInitialIntervals ? u_end : a + step;
-    stack.push_back({a, b, gauss5(speed, a, b), 0});
-  }
+  std::vector<Interval> stack(initial.rbegin(), initial.rend());
   while (!stack.empty()) {
     const Interval iv = stack.back();
     stack.pop_back();

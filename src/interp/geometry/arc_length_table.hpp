@@ -4,7 +4,7 @@
 // Length: adaptive Gauss-Legendre quadrature (5 nodes). An interval is accepted when its
 // 5-node value and the sum over its two halves agree to 1e-11 of the first estimate of the total
 // length, so the relative length error is far below the required 1e-6. The accepted interval
-// ends form a small table (u_k, s_k), typically 4-16 entries for a spline span.
+// ends form a small table (u_k, s_k), typically 3-9 entries for a spline span (two first intervals).
 // Inverse: the table brackets s; Newton on s(u) - s = 0 inside the bracket, with s(u) from the
 // same 5-node rule over [u_k, u], falls back to bisection when a step leaves the bracket.
 #include <functional>

@@ -14,11 +14,19 @@ PolynomialSpan::PolynomialSpan(const Eigen::Matrix4d& coefficients, double u_end
     : c_(coefficients), u_end_(u_end) {
   const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
   table_ = ArcLengthTable(sp, 0.0, u_end_);
-  for (int i = 0; i <= kCurvatureSamples; ++i) {
-    const ParametricDerivatives d = derivatives(u_end_ * i / kCurvatureSamples);
-    const double v = d.d1.norm();
-    if (v > 0.0) max_curvature_ = std::max(max_curvature_, d.d1.cross(d.d2).norm() / (v * v * v));
+}
+
+double PolynomialSpan::max_curvature() const {
+  if (max_curvature_ < 0.0) {
+    double largest = 0.0;
+    for (int i = 0; i <= kCurvatureSamples; ++i) {
+      const ParametricDerivatives d = derivatives(u_end_ * i / kCurvatureSamples);
+      const double v = d.d1.norm();
+      if (v > 0.0) largest = std::max(largest, d.d1.cross(d.d2).norm() / (v * v * v));
+    }
+    max_curvature_ = largest;
   }
+  return max_curvature_;
 }
 
 PolynomialSpan PolynomialSpan::hermite(const Vec3& p0, const Vec3& p1, const Vec3& m0, const Vec3& m1,

@@ -27,7 +27,9 @@ class PolynomialSpan final : public Curve {
   CurvePoint at(double s) const override;
   Vec3 start() const override { return derivatives(0.0).p; }
   Vec3 end() const override { return derivatives(u_end_).p; }
-  double max_curvature() const override { return max_curvature_; }
+  // Sampled on first use: only cutter compensation asks, and the planner's hot path builds
+  // one span per spline block.
+  double max_curvature() const override;
 
   ParametricDerivatives derivatives(double u) const;
   double parameter_end() const { return u_end_; }
@@ -42,7 +44,7 @@ class PolynomialSpan final : public Curve {
   Eigen::Matrix4d c_;
   double u_end_;
   ArcLengthTable table_;
-  double max_curvature_ = 0.0;
+  mutable double max_curvature_ = -1.0;  // < 0: not sampled yet
 };
 
 }  // namespace drycut::geometry
