@@ -2,7 +2,7 @@
 """Accuracy of the 24 progressive 3-D thesis programs, simulated by `drycut deviation`, next to
 program size; and the knot-density sweep on the reference contour at the experiment's pass limit.
 
-Usage: bench/thesis-accuracy/run.py [path/to/drycut] > table.md
+Usage: bench/thesis-accuracy/run.py [path/to/drycut [deviation options...]] > table.md
 Reads the committed programs in programs/thesis (regenerate with programs/thesis/generate.sh).
 """
 import json
@@ -14,6 +14,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 DRYCUT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "drycut")
+EXTRA = sys.argv[2:]  # further `drycut deviation` options, e.g. --held-line-range 3
 PROGRAMS = os.path.join(ROOT, "programs", "thesis")
 SETS = [("EKVI", 90), ("EKVI", 45), ("EKVI", 15), ("POLAR", 1), ("POLAR", 5), ("POLAR", 15)]
 METHODS = [("LIN", "linear"), ("A", "aspline"), ("B", "bspline"), ("C", "cspline")]
@@ -29,15 +30,16 @@ def fmt(value, digits=4):
 
 def deviation(main):
     with tempfile.NamedTemporaryFile(suffix=".json") as out:
-        run = subprocess.run([DRYCUT, "deviation", main, "--json", out.name], capture_output=True, text=True)
+        run = subprocess.run([DRYCUT, "deviation", main, "--json", out.name] + EXTRA, capture_output=True, text=True)
         report = json.load(open(out.name)) if os.path.getsize(out.name) else None
     return run.returncode, report
 
 
 def main():
     print("| set | method | sub bytes | main bytes | prog. max all loops mm | prog. max loop 2 mm "
-          "| prog. CP MAE mm | tool-cut max loop 2 mm | tool-cut gouge mm | tool-cut CP MAE mm | alarms |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|")
+          "| prog. CP MAE mm | tool-cut max loop 2 mm | tool-cut gouge mm | tool-cut CP MAE mm "
+          "| CP without crossing prog./cut | alarms |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
     for family, number in SETS:
         for tag, method in METHODS:
             main_file = os.path.join(PROGRAMS, f"{family}_{tag}_{number}.MPF")
@@ -48,10 +50,19 @@ def main():
             bottom = next((p for p in r["passes"] if p["name"] == r["control_point_pass"]), None) if r else None
             all_max = max((p["programmed"]["max_mm"] for p in loops), default=None)
             cut = bottom["tool_cut"] if bottom else None
+            summary = r.get("control_point_summary") if r else None
+            missing = "-"
+            if summary:
+                tool = summary["tool_cut"]
+                missing = f"{summary['programmed']['without_crossing']}/{'-' if tool is None else tool['without_crossing']}"
+            elif r:  # a drycut before the held-line summary: the points without a difference
+                rows = r["control_points"]
+                missing = (f"{sum(c['programmed_difference_mm'] is None for c in rows)}/"
+                           f"{sum(c['tool_cut_difference_mm'] is None for c in rows) if cut else '-'}")
             print(f"| {family}_{number} | {method} | {sub_bytes} | {main_bytes} | {fmt(all_max)} "
                   f"| {fmt(bottom['programmed']['max_mm'] if bottom else None)} | {fmt(r and r['control_point_mae_mm'])} "
                   f"| {fmt(cut and cut['max_mm'])} | {fmt(cut and cut['deepest_gouge_mm'])} "
-                  f"| {fmt(r and r['tool_cut_control_point_mae_mm'])} | {'; '.join(a.replace(ROOT + os.sep, '') for a in r['alarms']) if r else 'exit ' + str(code)} |")
+                  f"| {fmt(r and r['tool_cut_control_point_mae_mm'])} | {missing} | {'; '.join(a.replace(ROOT + os.sep, '') for a in r['alarms']) if r else 'exit ' + str(code)} |")
     print()
     sys.stdout.flush()
     with tempfile.NamedTemporaryFile(suffix=".json") as out:

@@ -11,6 +11,7 @@
 #include "app/program_pipeline.hpp"
 #include "workload/deviation_program_run.hpp"
 #include "workload/deviation_report.hpp"
+#include "workload/programmed_point_deviation.hpp"
 
 namespace drycut::app {
 namespace {
@@ -22,7 +23,63 @@ struct DeviationOptions {
   std::string control_points_csv;
   double step_mm = 0.01;
   double capture_mm = 0.5;
+  double held_line_range_mm = workload::kDefaultHeldLineRangeMm;
+  bool programmed_points = false;
 };
+
+void write_json(const std::string& file, const nlohmann::json& j) {
+  std::ofstream out(file);
+  if (!out) throw UsageError("cannot write " + file);
+  out << j.dump(2) << "\n";
+}
+
+// --programmed-points: the path the planner gets (compensated, compressed, smoothed) against the
+// program's own points, no reference curve. Under G41/G42 that path is the tool centre, so the
+// figures include the radius offset.
+int run_programmed_points(const DeviationOptions& o) {
+  if (!o.curve.polar.empty() || !o.curve.parametric.empty() || !o.curve.points_csv.empty() ||
+      !o.control_points_csv.empty())
+    throw UsageError("--programmed-points measures the path against the program's own points: no curve or control points");
+  const machine::MachineProfile profile = load_machine(o.program);
+  workload::SampleOptions sample_options;
+  sample_options.search_path = search_path_with_cycles(o.program.search_path, !o.program.no_standard_cycles);
+  sample_options.step_mm = o.step_mm;
+  sample_options.max_steps = o.program.max_steps;
+  sample_options.tool_centre = true;
+  const workload::SampledProgram sampled = workload::sample_program(o.program.program, profile, sample_options);
+  const workload::ProgrammedPointDeviation d =
+      workload::programmed_point_deviation(sampled.programmed_points, sampled.tool_centre);
+  std::printf("programmed points: %zu in %zu polylines (feed blocks between rapids)\n", d.programmed_points, d.polylines);
+  auto where = [](const BlockRef& b) {
+    return b.file ? "; max at " + b.file_name() + ":" + std::to_string(b.line) + " " + b.text : std::string();
+  };
+  std::printf("path -> programmed polyline: max %.4f mm, mean %.4f mm over %zu path samples%s\n",
+              d.path_to_polyline.max_mm, d.path_to_polyline.mean_mm, d.path_to_polyline.count,
+              where(d.path_to_polyline.max_at).c_str());
+  std::printf("programmed points -> path:   max %.4f mm, mean %.4f mm over %zu points%s\n", d.points_to_path.max_mm,
+              d.points_to_path.mean_mm, d.points_to_path.count, where(d.points_to_path.max_at).c_str());
+  if (!o.json_file.empty()) {
+    auto stats = [](const workload::DistanceStats& s) {
+      nlohmann::json at = nullptr;
+      if (s.max_at.file) at = {{"file", s.max_at.file_name()}, {"line", s.max_at.line}, {"text", s.max_at.text}};
+      return nlohmann::json{{"count", s.count}, {"max_mm", s.max_mm}, {"mean_mm", s.mean_mm}, {"max_at", at}};
+    };
+    nlohmann::json j{{"program", o.program.program},
+                     {"sample_step_mm", o.step_mm},
+                     {"programmed_points", d.programmed_points},
+                     {"polylines", d.polylines},
+                     {"path_to_polyline", stats(d.path_to_polyline)},
+                     {"points_to_path", stats(d.points_to_path)},
+                     {"alarms", nlohmann::json::array()}};
+    if (sampled.program_alarm) j["alarms"].push_back(sampled.program_alarm->format());
+    write_json(o.json_file, j);
+  }
+  if (sampled.program_alarm) {
+    std::fprintf(stderr, "%s\n", sampled.program_alarm->format().c_str());
+    return kExitAlarm;
+  }
+  return kExitOk;
+}
 
 int run_deviation(const DeviationOptions& o) {
   const machine::MachineProfile profile = load_machine(o.program);
@@ -38,7 +95,7 @@ int run_deviation(const DeviationOptions& o) {
   sample_options.max_steps = o.program.max_steps;
   const workload::SampledProgram sampled = workload::sample_program(o.program.program, profile, sample_options);
   const workload::ContourSplit split = workload::split_contour(sampled, reference, o.capture_mm);
-  const workload::DeviationReport report = workload::evaluate_deviation(split, reference, control_points);
+  const workload::DeviationReport report = workload::evaluate_deviation(split, reference, control_points, o.held_line_range_mm);
 
   std::fputs(workload::format_table(report).c_str(), stdout);
   if (sampled.compensation_alarm)
@@ -50,9 +107,7 @@ int run_deviation(const DeviationOptions& o) {
     j["alarms"] = nlohmann::json::array();
     for (const auto* a : {&sampled.program_alarm, &sampled.compensation_alarm})
       if (*a) j["alarms"].push_back((*a)->format());
-    std::ofstream out(o.json_file);
-    if (!out) throw UsageError("cannot write " + o.json_file);
-    out << j.dump(2) << "\n";
+    write_json(o.json_file, j);
   }
   if (sampled.program_alarm) {
     std::fprintf(stderr, "%s\n", sampled.program_alarm->format().c_str());
@@ -77,13 +132,19 @@ void register_deviation(CLI::App& app) {
   cmd->add_option("--json", o->json_file, "Write the report as JSON");
   cmd->add_option("--control-points", o->control_points_csv,
                   "CSV x,y[,hold x|y] of control points (default: the thesis's 11 points in the second quadrant)");
+  cmd->add_option("--held-line-range", o->held_line_range_mm,
+                  "How far (mm) along a control point's held line, on either side, a crossing with the contour is looked for")
+      ->default_val(workload::kDefaultHeldLineRangeMm)
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--programmed-points", o->programmed_points,
+               "Measure the path against the program's own points (end points of the feed blocks) instead of a curve");
   cmd->add_option("--step", o->step_mm, "Sample spacing along the path in mm")->default_val(0.01)->check(CLI::PositiveNumber);
   cmd->add_option("--capture", o->capture_mm, "A feed move belongs to the contour when both its ends are this close to the curve (mm)")
       ->default_val(0.5)
       ->check(CLI::PositiveNumber);
   cmd->callback([o] {
     try {
-      throw ExitRequest{run_deviation(*o)};
+      throw ExitRequest{o->programmed_points ? run_programmed_points(*o) : run_deviation(*o)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut deviation: %s\n", e.what());
       throw ExitRequest{kExitUsage};

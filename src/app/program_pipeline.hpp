@@ -56,8 +56,9 @@ struct PipelineOutcome {
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
                             interp::ElementSink& sink);
 
-// The same through the tool radius compensation stage: the sink receives the tool-centre path,
-// and the stage's warnings (10763 ...) join the outcome's diagnostics.
+// The same through the tool radius compensation stage and the NC block compressor
+// (COMPON/COMPCURV/COMPCAD): the sink receives the tool-centre path as the planner gets it, and
+// the compensation's warnings (10763 ...) join the outcome's diagnostics.
 PipelineOutcome run_program_tool_centre(const ProgramOptions& options, const machine::MachineProfile& profile,
                                         interp::ElementSink& sink);
 

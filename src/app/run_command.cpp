@@ -78,6 +78,23 @@ void print_summary(std::FILE* out, const RunOptions& o, const machine::MachinePr
   if (dips.size() > o.dips_shown) std::fprintf(out, "    ... %zu more (see --json)\n", total_dips - o.dips_shown);
 }
 
+// What the NC block compressor made of the run (docs/compressor.md): one summary line.
+struct CompressionTally {
+  uint64_t elements = 0, blocks = 0;
+  double max_deviation_mm = 0;
+  void add(const interp::PathElement& e) {
+    if (e.compressed_blocks == 0) return;
+    ++elements;
+    blocks += e.compressed_blocks;
+    max_deviation_mm = std::max(max_deviation_mm, e.compress_deviation_mm);
+  }
+  void print(std::FILE* out) const {
+    if (elements == 0) return;
+    std::fprintf(out, "  compressor         %llu blocks into %llu elements, deviation <= %.4f mm\n",
+                 static_cast<unsigned long long>(blocks), static_cast<unsigned long long>(elements), max_deviation_mm);
+  }
+};
+
 }  // namespace
 
 void register_run(CLI::App& app) {
@@ -126,8 +143,10 @@ void register_run(CLI::App& app) {
       motion::Planner planner(profile, observer, planner_options);
       // The end of the last motion the planner receives: the machine position after the run.
       std::optional<motion::Vec3> end_position;
-      report::ElementTap end_tap(planner, [&end_position](const interp::PathElement& e) {
+      CompressionTally compression;
+      report::ElementTap end_tap(planner, [&end_position, &compression](const interp::PathElement& e) {
         if (e.is_motion() && e.curve) end_position = e.curve->end();
+        compression.add(e);
       });
       PipelineOutcome outcome = run_program_tool_centre(o->program, profile, end_tap);
       const motion::PlanSummary& summary = planner.summary();
@@ -136,6 +155,7 @@ void register_run(CLI::App& app) {
       const bool stdout_taken = json_path == "-" || o->trace_file == "-";
       std::FILE* text_out = stdout_taken ? stderr : stdout;
       print_summary(text_out, *o, profile, summary, completion);
+      compression.print(text_out);
       if (span) print_span(text_out, events, *span);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {

@@ -33,6 +33,7 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
   }
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;
+  last_dynamics_.group = state_.dynamic_group;
 }
 
 void Interpreter::raise(const BlockContext& ctx, int number, const std::string& detail,
@@ -52,6 +53,7 @@ void Interpreter::execute(const parser::Block& block) {
     return;
   }
   BlockContext ctx(block);
+  ctx.simple = is_simple_block(block);
   apply_system_writes(block);
   apply_g_words(ctx);
   apply_commands(ctx);
@@ -59,6 +61,7 @@ void Interpreter::execute(const parser::Block& block) {
   apply_axis_words(ctx);
   apply_m_words(ctx);
   execute_motion(ctx);
+  if (!ctx.simple) block_between_compressible_ = true;
 }
 
 void Interpreter::apply_modal_save(parser::ModalSave what) {
@@ -323,6 +326,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.source = ctx.ref();
   e.dynamics.transition = state_.transition;
   e.dynamics.profile = state_.accel;
+  e.dynamics.group = state_.dynamic_group;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
   e.compensation.side = state_.compensation;
   // A mirror in the plane swaps the sides: G41 on the programmed contour is right of the mirrored one.
@@ -386,9 +390,11 @@ void Interpreter::execute_motion(BlockContext& ctx) {
       (!tools_.has_tool() || tools_.edge() == 0))
     raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", ctx.compensation_column);
   // Dynamics changes are told to the planner once, where they happen.
-  if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile) {
+  if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile ||
+      state_.dynamic_group != last_dynamics_.group) {
     last_dynamics_.transition = state_.transition;
     last_dynamics_.profile = state_.accel;
+    last_dynamics_.group = state_.dynamic_group;
     emit_control(ctx, ElementKind::DynamicsChange, "dynamics");
   }
 
@@ -439,6 +445,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
         end_spline_run(direction.norm() > 0 ? &direction : nullptr);
       }
       attach_extra_axes(ctx, e, std::move(extra));
+      mark_for_compressor(ctx, e);
       position_ = e.curve->end();
       check_limits(ctx, position_);
       emit(std::move(e));

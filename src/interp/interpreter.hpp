@@ -99,6 +99,9 @@ class Interpreter {
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);
+  // Marks a G1 element for the compressor stage (docs/compressor.md) and warns once about
+  // compressor settings drycut does not model.
+  void mark_for_compressor(const BlockContext& ctx, PathElement& element);
   void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
   // The path feed of a block of this length and chord (src/interp/feed_rate); alarms raised.
@@ -151,6 +154,7 @@ class Interpreter {
   SplineBlockQuota quota_;
   DynamicsMode last_dynamics_;
   bool ended_ = false;
+  bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
   ExtraAxes extra_axes_;

@@ -70,6 +70,12 @@ inline std::optional<FrameInstruction> frame_instruction_kind(std::string_view n
   return std::nullopt;
 }
 
+// A block the NC block compressor may join (FB1 B1 "NC block compression": `N.. G1 X.. Y.. Z..
+// F.. ;comment`, positions also as X=AC(..) or expressions): no word but G1, X/Y/Z and F.
+// Any other G code, M or H function, command, system-variable write, T, D ... interrupts
+// compression (compress_rules.cpp).
+bool is_simple_block(const parser::Block& block);
+
 // Minimum spline end-point blocks per window of 10 (facts §1.2).
 inline int spline_quota(MotionMode mode, int cubic_spline_blocks) {
   switch (mode) {
@@ -113,6 +119,7 @@ struct Interpreter::BlockContext {
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block
   std::vector<std::string> waits;            // WAITP/WAITS and implicit waits, before the motion
+  bool simple = false;  // a block the compressor may join: nothing but G1, X/Y/Z and F (compress_rules.cpp)
 };
 
 

@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 49> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 59> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -59,14 +59,25 @@ constexpr std::array<std::pair<std::string_view, Setter>, 49> kCodes{{
     {"KONT", [](ModalState& s) { s.contour_approach = true; }},
     {"CDON", [](ModalState& s) { s.collision_detection = true; }},
     {"CDOF", [](ModalState& s) { s.collision_detection = false; }},
+    // G group 59: which element of the dynamic machine data applies (machine/dynamic_groups.hpp).
+    {"DYNNORM", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Norm; }},
+    {"DYNPOS", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Pos; }},
+    {"DYNROUGH", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Rough; }},
+    {"DYNSEMIFIN", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::SemiFinish; }},
+    {"DYNFINISH", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Finish; }},
+    {"DYNPREC", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Precision; }},
+    {"COMPOF", [](ModalState& s) { s.compressor = Compressor::Off; }},
+    {"COMPON", [](ModalState& s) { s.compressor = Compressor::Compon; }},
+    {"COMPCURV", [](ModalState& s) { s.compressor = Compressor::Compcurv; }},
+    {"COMPCAD", [](ModalState& s) { s.compressor = Compressor::Compcad; }},
 }};
 
 // Modal codes of the reset list that shape nothing drycut plans (feed reference of tool radius
 // compensation, feed-forward, compressor off, FIFO control, exact-stop windows ...): accepted so a
 // machine's real MD20150 list can be used as it is.
-constexpr std::array<std::string_view, 14> kNoPathEffect{
-    "CFC", "CFTCP", "CFIN", "FNORM", "FFWOF", "COMPOF", "STARTFIFO", "G601", "G602", "G603",
-    "CUT2D", "DYNNORM", "SPATH", "G290"};
+constexpr std::array<std::string_view, 12> kNoPathEffect{
+    "CFC", "CFTCP", "CFIN", "FNORM", "FFWOF", "STARTFIFO", "G601", "G602", "G603",
+    "CUT2D", "SPATH", "G290"};
 
 }  // namespace
 

@@ -51,6 +51,7 @@ struct ModalState {
   SpindleState spindle = SpindleState::Stopped;
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
   AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
+  machine::DynamicGroup dynamic_group = machine::DynamicGroup::Norm;  // DYNNORM ... DYNPREC
   SplineCondition spline_begin = SplineCondition::Natural;
   SplineCondition spline_end = SplineCondition::Natural;
   int bspline_degree = 3;           // SD=
@@ -59,6 +60,7 @@ struct ModalState {
   bool contour_approach = false;      // KONT / NORM
   bool collision_detection = false;   // CDON / CDOF
   double disc = 0.0;                  // DISC=
+  Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD
 
   // Applies one reset/program code by name ("G64", "SOFT", "BTAN", ...). Returns false if the
   // name is not a modal code this state knows (the caller decides whether that is an error).

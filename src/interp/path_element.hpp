@@ -3,10 +3,12 @@
 // turns blocks into a stream of these plain elements; the planner knows nothing else about
 // the program. Every element carries the source block it came from.
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "interp/geometry/curve.hpp"
+#include "machine/dynamic_groups.hpp"
 #include "machine/source_location.hpp"
 
 namespace drycut::interp {
@@ -33,12 +35,16 @@ enum class TransitionMode {
 
 enum class AccelProfile { Brisk, Soft };
 
+// The NC block compressor of G group 30 (docs/compressor.md): COMPOF, COMPON, COMPCURV, COMPCAD.
+enum class Compressor { Off, Compon, Compcurv, Compcad };
+
 enum class StopKind { None, ProgramStop /*M0*/, OptionalStop /*M1*/, ProgramEnd /*M2/M30*/, Preprocessing /*STOPRE*/ };
 
 struct DynamicsMode {
   TransitionMode transition = TransitionMode::ExactStop;
   AccelProfile profile = AccelProfile::Brisk;
   bool exact_stop_this_block = false;  // G9
+  machine::DynamicGroup group = machine::DynamicGroup::Norm;  // G group 59: which MD array element
 };
 
 // Tool radius compensation requested for the element (G40/G41/G42 and their companions). The
@@ -106,6 +112,16 @@ struct PathElement {
   bool geometry_in_feed_group = true;  // FGROUP names a geometry axis (the default group)
   std::vector<PositioningMove> positioning;  // Positioning
   std::vector<std::string> wait_axes;        // AxisWait: the axes waited for; empty = every axis
+  // The compressor (src/interp/block_compressor.hpp): the mode active for the block, whether the
+  // block was a "simple" G1 block it may join (nothing but axes X/Y/Z and F), and whether a
+  // block that is not simple came between it and the previous element (that ends a run).
+  Compressor compressor = Compressor::Off;
+  bool compressible = false;
+  bool follows_other_block = true;
+  // Set on the compressor's output: how many programmed blocks the element replaces (0: not a
+  // compressed element) and how far it strays from their programmed end points and lines (mm).
+  uint32_t compressed_blocks = 0;
+  double compress_deviation_mm = 0.0;
 
   // The length the path feed F refers to and the planner plans along (FGROUP, PGA Fundamentals
   // "Feedrate (G93, G94, G95, F, FGROUP)"): the geometry's length if the geometry axes are in the

@@ -63,6 +63,7 @@ class Importer {
     read_extra_axes();
     read_geometry_axis_factors();
     read_nc_and_channel();
+    read_dynamic_group_factors();
     read_spindle();
     read_reset_gcodes();
     read_settable_frames();
@@ -250,6 +251,8 @@ class Importer {
               "-1e9 (no limit)");
     map_value(k + "max_" + pos, {axis_key("POS_LIMIT_PLUS", m)}, 1.0, a.max_mm, who + " MD36110 POS_LIMIT_PLUS",
               "1e9 (no limit)");
+    map_value(k + "compress_pos_tol_" + pos, {axis_key("COMPRESS_POS_TOL", m)}, 1.0, a.compress_pos_tol_mm,
+              who + " MD33100 COMPRESS_POS_TOL", "0.1");
     if (a.rotary) read_rotary(m, k, a);
   }
 
@@ -325,6 +328,49 @@ class Importer {
     geometry_factor("G00_JERK_FACTOR", "path.g0_jerk_factor", "MD32435 G00_JERK_FACTOR", p.g0_jerk_factor);
   }
 
+  // The elements 1..5 of the dynamic data (DYNPOS ... DYNPREC; machine/dynamic_groups.hpp) as
+  // factors on element 0: per axis datum the smallest ratio over X, Y, Z (the tightest binds).
+  void read_dynamic_group_factors() {
+    struct Source {
+      const char* md;
+      const char* key;
+      double DynamicGroupFactors::*field;
+      bool channel;
+    };
+    static constexpr std::array<Source, 4> kSources{{
+        {"MAX_AX_ACCEL", "max_ax_accel_factor", &DynamicGroupFactors::max_ax_accel, false},
+        {"MAX_AX_JERK", "max_ax_jerk_factor", &DynamicGroupFactors::max_ax_jerk, false},
+        {"PATH_TRANS_JERK_LIM", "path_trans_jerk_lim_factor", &DynamicGroupFactors::path_trans_jerk_lim, false},
+        {"MAX_PATH_JERK", "max_path_jerk_factor", &DynamicGroupFactors::max_path_jerk, true},
+    }};
+    for (size_t g = 1; g < kDynamicGroupCount; ++g) {
+      const std::string group(dynamic_group_name(static_cast<DynamicGroup>(g)));
+      for (const Source& src : kSources) {
+        std::optional<double> smallest;
+        const MachineDatum* from = nullptr;
+        auto consider = [&](const std::string& base_key, const std::string& group_key) {
+          const auto base = number_of(base_key);
+          const MachineDatum* d = take({group_key});
+          if (!d || !base || *base <= 0) return;
+          const double ratio = std::get<double>(d->value) / *base;
+          if (!smallest || ratio < *smallest) smallest = ratio, from = d;
+        };
+        if (src.channel) {
+          consider(std::string("$MC_") + src.md + "[0]", std::string("$MC_") + src.md + "[" + std::to_string(g) + "]");
+        } else {
+          for (int c : geo_channel_axis_) {
+            const std::string m = "#" + std::to_string(machine_axis_of_channel_axis(c));
+            consider(std::string("$MA_") + src.md + "[0," + m + "]",
+                     std::string("$MA_") + src.md + "[" + std::to_string(g) + "," + m + "]");
+          }
+        }
+        if (!smallest || *smallest <= 0) continue;  // absent: the factor stays 1, as the factory values
+        out_.profile.dynamic_groups[g].*src.field = *smallest;
+        out_.sources["dynamic_groups." + group + "." + src.key] = {written_name(*from), from->location()};
+      }
+    }
+  }
+
   void read_ipo_cycle() {
     MachineProfile& p = out_.profile;
     const MachineDatum* sys = take({"$MN_SYSCLOCK_CYCLE_TIME"});
@@ -365,6 +411,17 @@ class Importer {
               "SD42528 CUTCOM_DECEL_LIMIT", "0");
     map_int("program.cubic_spline_blocks", {"$MC_CUBIC_SPLINE_BLOCKS"}, p.cubic_spline_blocks,
             "MD20160 CUBIC_SPLINE_BLOCKS");
+    // The NC block compressor (docs/compressor.md).
+    CompressorData& c = p.compressor;
+    map_value("compressor.compress_block_path_limit_mm", {"$MC_COMPRESS_BLOCK_PATH_LIMIT"}, 1.0,
+              c.block_path_limit_mm, "MD20170 COMPRESS_BLOCK_PATH_LIMIT", "20 mm");
+    map_value("compressor.compress_velo_tol_mm_min", {"$MC_COMPRESS_VELO_TOL"}, 1.0 / 60.0, c.velo_tol_mm_s,
+              "MD20172 COMPRESS_VELO_TOL", "100 mm/min");
+    map_int("compressor.compressor_mode", {"$MC_COMPRESSOR_MODE"}, c.mode, "MD20482 COMPRESSOR_MODE");
+    map_value("compressor.compress_contur_tol_mm", {"$SC_COMPRESS_CONTUR_TOL"}, 1.0, c.contur_tol_mm,
+              "SD42475 COMPRESS_CONTUR_TOL", "0.05 mm");
+    map_value("compressor.crit_spline_angle_deg", {"$SC_CRIT_SPLINE_ANGLE"}, 1.0, c.crit_spline_angle_deg,
+              "SD42470 CRIT_SPLINE_ANGLE", "36 deg");
     map_int("program.cutcom_maxnum_check_blocks", {"$MC_CUTCOM_MAXNUM_CHECK_BLOCKS"}, p.cutcom_maxnum_check_blocks,
             "MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS");
     map_int("program.cutcom_maxnum_dummy_blocks", {"$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS"}, p.cutcom_maxnum_dummy_blocks,

@@ -21,6 +21,11 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MC_TOOL_CHANGE_M_CODE"] = p.tool_change_m_code;                 // MD22560
   md["$MC_CUTTING_EDGE_DEFAULT"] = p.cutting_edge_default;             // MD20270
   md["$MA_SPIND_VELO_LIMIT[SP1]"] = p.max_spindle_speed_rpm;           // MD35100
+  md["$MC_COMPRESS_BLOCK_PATH_LIMIT"] = p.compressor.block_path_limit_mm;  // MD20170
+  md["$MC_COMPRESS_VELO_TOL"] = p.compressor.velo_tol_mm_s * 60.0;         // MD20172 (mm/min)
+  md["$MC_COMPRESSOR_MODE"] = p.compressor.mode;                           // MD20482
+  md["$SC_COMPRESS_CONTUR_TOL"] = p.compressor.contur_tol_mm;              // SD42475
+  md["$SC_CRIT_SPLINE_ANGLE"] = p.compressor.crit_spline_angle_deg;        // SD42470
   for (const AxisData& a : p.axes) {
     for (const std::string& axis : {a.name + "1", a.name}) {
       md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * 60.0;        // MD32000
@@ -29,6 +34,7 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
       md["$MA_MAX_ACCEL_OVL_FACTOR[" + axis + "]"] = p.max_accel_ovl_factor;   // MD32310
       md["$MA_POS_LIMIT_PLUS[" + axis + "]"] = a.max_mm;                        // MD36110
       md["$MA_POS_LIMIT_MINUS[" + axis + "]"] = a.min_mm;                       // MD36100
+      md["$MA_COMPRESS_POS_TOL[" + axis + "]"] = a.compress_pos_tol_mm;         // MD33100
     }
   }
   for (const auto& [name, value] : p.machine_data) md[name] = value;

@@ -10,6 +10,7 @@
 
 #include "default_profile_json.hpp"
 #include "machine/profile_axes.hpp"
+#include "machine/profile_compressor.hpp"
 #include "machine/profile_object_reader.hpp"
 
 namespace drycut::machine {
@@ -212,8 +213,10 @@ MachineProfile load_profile_json(const std::string& json_text, const std::string
       read_path(json::object(), p);
     }
     if (const json* program = r.child("program")) read_program(*program, p);
+    if (const json* compressor = r.child("compressor")) read_compressor(*compressor, p);
     if (const json* tools = r.child("tools")) read_tools(*tools, p);
     if (const json* md = r.child("machine_data")) read_machine_data(*md, p);
+    if (const json* groups = r.child("dynamic_groups")) read_dynamic_groups(*groups, p.dynamic_groups);
     r.reject_unknown_keys();
     return p;
   } catch (const ProfileError& e) {
@@ -306,8 +309,10 @@ std::string profile_to_json(const MachineProfile& p) {
     for (const auto& e : t.edges) edges.push_back({{"d", e.d}, {"radius_mm", e.radius_mm}, {"length_mm", e.length_mm}});
     tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});
   }
+  root["compressor"] = compressor_to_json(p);
   root["tools"] = tools;
   if (!p.machine_data.empty()) root["machine_data"] = p.machine_data;
+  if (auto groups = dynamic_groups_to_json(p.dynamic_groups); !groups.empty()) root["dynamic_groups"] = groups;
   return root.dump(2);
 }
 

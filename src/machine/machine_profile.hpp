@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "machine/dynamic_groups.hpp"
+
 namespace drycut::machine {
 
 // One machine axis. A rotary axis keeps its values in degrees where the names say mm
@@ -29,6 +31,19 @@ struct AxisData {
   double max_accel_mm_s2 = 0;     // MD32300 MAX_AX_ACCEL
   double max_jerk_mm_s3 = 0;      // MD32431 MAX_AX_JERK
   double transition_jerk_mm_s3 = 0;  // MD32432 PATH_TRANS_JERK_LIM (SOFT, at block transitions); 0 = max_jerk
+  double compress_pos_tol_mm = 0.1;  // MD33100 COMPRESS_POS_TOL: compressor deviation from the programmed points
+};
+
+// The NC block compressor COMPON/COMPCURV/COMPCAD (docs/compressor.md): channel machine and
+// setting data, plus drycut's own choices (named as such).
+struct CompressorData {
+  double block_path_limit_mm = 20.0;     // MD20170 COMPRESS_BLOCK_PATH_LIMIT: longer blocks are not compressed
+  double velo_tol_mm_s = 100.0 / 60.0;   // MD20172 COMPRESS_VELO_TOL: a larger F change breaks a run
+  double contur_tol_mm = 0.05;           // SD42475 COMPRESS_CONTUR_TOL (COMPRESSOR_MODE units digit 1/3)
+  int mode = 0;                          // MD20482 COMPRESSOR_MODE (units: tolerance set; hundreds: circles/G0)
+  double crit_spline_angle_deg = 36.0;   // SD42470 CRIT_SPLINE_ANGLE: a sharper bend is a corner
+  int max_blocks_per_span = 10;          // COMPON/COMPCURV: blocks one polynomial may join (FB1: "up to 10")
+  int flush_points = 1000;               // drycut: a run is fitted and handed on every this many points
 };
 
 struct ToolEdge {
@@ -56,6 +71,8 @@ struct MachineProfile {
   double path_jerk_mm_s3 = 0;                   // MD20600 MAX_PATH_JERK
   double soft_accel_factor = 1.0;               // MD32433 SOFT_ACCEL_FACTOR
   double curv_effect_on_path_accel = 0.75;      // MD20602
+  // DYNPOS ... DYNPREC as factors on the DYNNORM values above (machine/dynamic_groups.hpp).
+  DynamicGroupTable dynamic_groups;
   int lookahead_blocks = 64;                    // effective look-ahead depth (MD28060 bound)
   double short_block_factor = 0.9;              // v <= factor * L / T_IPO
   double g0_accel_factor = 1.0;                 // MD32434 G00_ACCEL_FACTOR
@@ -90,6 +107,7 @@ struct MachineProfile {
   int cutcom_maxnum_check_blocks = 3;           // MD20240
   int cutcom_maxnum_dummy_blocks = 3;           // MD20250
   double cutcom_decel_limit = 0.0;              // SD42528: lowest tool-centre feed share on inside curves (CFC)
+  CompressorData compressor;                    // COMPON/COMPCURV/COMPCAD (JSON object "compressor")
 
   // Further machine/setting data, inputs and PLC data by their `$` name as programs read them
   // ("$MN_SCALING_SYSTEM_IS_METRIC", "$MA_COMPRESS_POS_TOL[X1]", "$A_IN[3]"). The fields above

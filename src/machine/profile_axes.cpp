@@ -56,6 +56,8 @@ AxisData read_axis(const json& node, const std::string& path, const std::string&
   if (auto v = r.quantity("transition_jerk", dim.jerk))
     a.transition_jerk_mm_s3 = require_positive(*v, r.key_path("transition_jerk"));
   if (auto v = r.quantity("pos_velocity", dim.velocity)) a.pos_velocity_mm_s = require_positive(*v, r.key_path("pos_velocity"));
+  if (auto v = r.quantity("compress_pos_tol", dim.position))
+    a.compress_pos_tol_mm = require_positive(*v, r.key_path("compress_pos_tol"));
   r.reject_unknown_keys();
   if (!(a.min_mm < a.max_mm)) throw ProfileError(path + ".min: must be < max (software limit range)");
   return a;
@@ -102,7 +104,8 @@ json axes_to_json(const MachineProfile& p) {
               {std::string("max_accel") + acc, a.max_accel_mm_s2 / unit},
               {std::string("max_jerk") + jrk, a.max_jerk_mm_s3 / unit},
               {std::string("transition_jerk") + jrk, a.transition_jerk_mm_s3 / unit},
-              {std::string("pos_velocity") + vel, a.pos_velocity_mm_s * 60.0}};
+              {std::string("pos_velocity") + vel, a.pos_velocity_mm_s * 60.0},
+              {std::string("compress_pos_tol_") + pos, a.compress_pos_tol_mm}};
     if (a.rotary) o["rotary"] = true;
     if (a.misc_function_mask != 0) o["misc_function_mask"] = a.misc_function_mask;
     if (a.modulo) {

@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -57,6 +57,14 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 46> kNames{{
     {"radius", "$TC_DP6 (tool radius)"},
     {"length", "$TC_DP3 (tool length 1)"},
     {"tools", "tool offsets $TC_DP"},
+    {"compress_pos_tol", "MD33100 COMPRESS_POS_TOL"},
+    {"compress_block_path_limit", "MD20170 COMPRESS_BLOCK_PATH_LIMIT"},
+    {"compress_velo_tol", "MD20172 COMPRESS_VELO_TOL"},
+    {"compress_contur_tol", "SD42475 COMPRESS_CONTUR_TOL"},
+    {"compressor_mode", "MD20482 COMPRESSOR_MODE"},
+    {"crit_spline_angle", "SD42470 CRIT_SPLINE_ANGLE"},
+    {"max_blocks_per_span", "- (FB1: COMPON/COMPCURV join up to 10 blocks)"},
+    {"flush_points", "- (drycut: compressor run window)"},
 }};
 
 // Unit suffixes written by profile_to_json, longest first.

@@ -12,17 +12,23 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   d.rapid = element.rapid;
   d.feed = element.rapid ? 0.0 : element.feed_mm_s;
   d.soft = element.dynamics.profile == interp::AccelProfile::Soft;
+  // The dynamic group (DYNNORM ... DYNPREC) picks the element of the dynamic machine data; the
+  // mode factors (SOFT, G0) apply on top of it.
+  const machine::DynamicGroupFactors& group = profile.dynamic_groups[static_cast<size_t>(element.dynamics.group)];
   const double accel_factor = element.rapid ? profile.g0_accel_factor : (d.soft ? profile.soft_accel_factor : 1.0);
   const double jerk_factor = element.rapid ? profile.g0_jerk_factor : 1.0;
   for (int i = 0; i < 3; ++i) {
     const auto& axis = profile.axes[static_cast<size_t>(i)];
+    const double accel = axis.max_accel_mm_s2 * group.max_ax_accel;
+    const double jerk = axis.max_jerk_mm_s3 * group.max_ax_jerk;
     d.axis_velocity[i] = axis.max_velocity_mm_s;
-    d.raw_axis_accel[i] = axis.max_accel_mm_s2;
-    d.axis_accel[i] = axis.max_accel_mm_s2 * accel_factor;
-    d.axis_jerk[i] = axis.max_jerk_mm_s3 * jerk_factor;
-    d.transition_jerk[i] = (axis.transition_jerk_mm_s3 > 0 ? axis.transition_jerk_mm_s3 : axis.max_jerk_mm_s3) * jerk_factor;
+    d.raw_axis_accel[i] = accel;
+    d.axis_accel[i] = accel * accel_factor;
+    d.axis_jerk[i] = jerk * jerk_factor;
+    d.transition_jerk[i] =
+        (axis.transition_jerk_mm_s3 > 0 ? axis.transition_jerk_mm_s3 * group.path_trans_jerk_lim : jerk) * jerk_factor;
   }
-  d.path_jerk = profile.path_jerk_mm_s3 * jerk_factor;
+  d.path_jerk = profile.path_jerk_mm_s3 * group.max_path_jerk * jerk_factor;
   d.centripetal_share = profile.curv_effect_on_path_accel;
   d.ipo_cycle = profile.ipo_cycle_s;
   d.short_block_factor = profile.short_block_factor;
@@ -36,10 +42,10 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
       t.axis = m.axis;
       t.tangent = m.travel / length;
       t.velocity = axis.max_velocity_mm_s;
-      t.raw_accel = axis.max_accel_mm_s2;
-      t.accel = axis.max_accel_mm_s2 * accel_factor;
-      t.jerk = axis.max_jerk_mm_s3 * jerk_factor;
-      t.transition_jerk = axis.transition_jerk_mm_s3 * jerk_factor;
+      t.raw_accel = axis.max_accel_mm_s2 * group.max_ax_accel;
+      t.accel = t.raw_accel * accel_factor;
+      t.jerk = axis.max_jerk_mm_s3 * group.max_ax_jerk * jerk_factor;
+      t.transition_jerk = axis.transition_jerk_mm_s3 * group.path_trans_jerk_lim * jerk_factor;
       d.extra.push_back(t);
     }
   }

@@ -2,6 +2,7 @@
 // What the planner reports: one timing per element, optional samples per IPO cycle, feed dips
 // and a summary.
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct BlockTiming {
   Limit limit = Limit::Feed;  // the constraint that bound the LOWEST velocity in the element
   bool rapid = false;
   bool after_first_m0 = false;
+  // A span of the NC block compressor: the programmed blocks it replaces (0: none) and how far
+  // it strays from their programmed points and lines (interp::PathElement).
+  uint32_t compressed_blocks = 0;
+  double compress_deviation_mm = 0;
 };
 
 struct TrajectorySample {

@@ -436,6 +436,8 @@ void Planner::commit_front() {
   // The element leaves the window here: its source and label move into the timing uncopied.
   timing.source = std::move(w.element.source);
   timing.label = std::move(w.element.label);
+  timing.compressed_blocks = w.element.compressed_blocks;
+  timing.compress_deviation_mm = w.element.compress_deviation_mm;
   observer_.on_block(timing);
 
   if (w.segment_count > 0) --motion_in_window_;

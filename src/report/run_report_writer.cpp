@@ -154,6 +154,13 @@ void RunReportWriter::on_block(const motion::BlockTiming& t) {
   b += motion::to_string(t.limit);
   b += lines ? "\",\"rapid\":" : "\",";
   b += t.rapid ? "true" : "false";
+  if (t.compressed_blocks > 0) {
+    // A compressor span: the blocks it replaces and its deviation (two trailing columns).
+    b += lines ? ",\"compressed_blocks\":" : ",";
+    append_json_integer(b, t.compressed_blocks);
+    b += lines ? ",\"deviation_mm\":" : ",";
+    append_json_number(b, t.compress_deviation_mm, kLengthDecimals);
+  }
   b += lines ? "}\n" : "]";
   first_row_ = false;
   if (b.size() >= kFlushBytes) flush();

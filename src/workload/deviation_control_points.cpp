@@ -49,57 +49,15 @@ std::vector<ControlPoint> read_control_points(const std::string& path) {
   return points;
 }
 
-std::optional<double> polyline_difference(const std::vector<Vec3>& path, const ControlPoint& point, double window_mm) {
-  const int held = point.hold_x ? 0 : 1, free = 1 - held;
-  const double target = point.nominal[held];
-  std::optional<double> best;
-  for (size_t i = 0; i + 1 < path.size(); ++i) {
-    const double a = path[i][held] - target, b = path[i + 1][held] - target;
-    if (a * b > 0 || a == b) continue;
-    const double f = a / (a - b);
-    const double diff = path[i][free] + f * (path[i + 1][free] - path[i][free]) - point.nominal[free];
-    if (std::abs(diff) <= window_mm && (!best || std::abs(diff) < std::abs(*best))) best = diff;
-  }
-  return best;
-}
-
-std::optional<double> tool_cut_difference(const PolylineIndex& tool_centre, double radius_mm, const ControlPoint& point,
-                                          double window_mm) {
-  if (tool_centre.segment_count() == 0) return std::nullopt;
-  Vec2 along = point.hold_x ? Vec2::UnitY() : Vec2::UnitX();
-  // > 0: the point is outside the swept area (material left), < 0: inside it (cut).
-  auto gap = [&](double w) { return tool_centre.nearest(point.nominal + w * along).distance - radius_mm; };
-  const double g0 = gap(0.0);
-  if (g0 == 0.0) return 0.0;
-  constexpr double kStep = 0.01;
-  double previous[2] = {g0, g0};
-  for (int k = 1; k * kStep <= window_mm; ++k) {
-    for (int side = 0; side < 2; ++side) {
-      const double sign = side == 0 ? 1.0 : -1.0;
-      const double w = sign * k * kStep;
-      const double g = gap(w);
-      if ((g > 0) != (previous[side] > 0)) {
-        double lo = w - sign * kStep, hi = w, glo = previous[side];
-        for (int iter = 0; iter < 50; ++iter) {
-          const double mid = 0.5 * (lo + hi), gm = gap(mid);
-          if ((gm > 0) == (glo > 0)) lo = mid, glo = gm;
-          else hi = mid;
-        }
-        return 0.5 * (lo + hi);
-      }
-      previous[side] = g;
-    }
-  }
-  return std::nullopt;
-}
-
-std::optional<double> mean_absolute_error(const std::vector<std::optional<double>>& differences) {
+ControlPointMae control_point_mae(const std::vector<std::optional<double>>& differences) {
+  ControlPointMae result;
+  result.points = differences.size();
   double sum = 0;
-  size_t n = 0;
   for (const auto& d : differences)
-    if (d) sum += std::abs(*d), ++n;
-  if (n == 0) return std::nullopt;
-  return sum / static_cast<double>(n);
+    if (d) sum += std::abs(*d), ++result.measured;
+  result.without_crossing = result.points - result.measured;
+  if (result.measured) result.mae_mm = sum / static_cast<double>(result.measured);
+  return result;
 }
 
 }  // namespace drycut::workload

@@ -2,12 +2,13 @@
 // The experiment's accuracy measure (EXPERIMENT.md §7): at each control point hold one
 // coordinate (Y, or X for point 1 at the top of the contour) and take the difference in the other
 // coordinate between the contour and the point; the figure of merit is the mean absolute error.
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "workload/curve_source.hpp"
-#include "workload/deviation_polyline_index.hpp"
+#include "workload/deviation_polyline_index.hpp"  // Vec2
 
 namespace drycut::workload {
 
@@ -24,17 +25,12 @@ std::vector<ControlPoint> thesis_control_points(const CurveSource& curve);
 // Throws UsageError.
 std::vector<ControlPoint> read_control_points(const std::string& path);
 
-// Signed difference (contour minus point) along the free coordinate where the polyline crosses
-// the held coordinate, the crossing nearest the point within `window_mm`.
-std::optional<double> polyline_difference(const std::vector<Vec3>& path, const ControlPoint& point,
-                                          double window_mm = 1.5);
-
-// The same for the surface the tool cuts: the point on the line through the control point where
-// the distance to the tool-centre path equals the tool radius (the envelope), nearest the point.
-std::optional<double> tool_cut_difference(const PolylineIndex& tool_centre, double radius_mm,
-                                          const ControlPoint& point, double window_mm = 1.5);
-
-// Mean of |difference| over the points that have one; nullopt when none has.
-std::optional<double> mean_absolute_error(const std::vector<std::optional<double>>& differences);
+// The figure of merit over the points whose held line meets the contour (differences from
+// deviation_held_line.hpp), with the count of those it does not meet, which the MAE leaves out.
+struct ControlPointMae {
+  std::optional<double> mae_mm;  // nullopt when no point has a crossing
+  size_t points = 0, measured = 0, without_crossing = 0;
+};
+ControlPointMae control_point_mae(const std::vector<std::optional<double>>& differences);
 
 }  // namespace drycut::workload

@@ -112,4 +112,33 @@ NearestHit PolylineIndex::nearest(const Vec2& q) const {
   return best;
 }
 
+std::vector<double> PolylineIndex::crossings(const Vec2& a, const Vec2& b) const {
+  std::vector<double> result;
+  if (cell_start_.empty()) return result;
+  auto clamped = [](double v, size_t n) { return std::clamp(static_cast<long>(std::floor(v)), 0L, static_cast<long>(n) - 1); };
+  const Vec2 lo = (a.cwiseMin(b) - origin_) / cell_, hi = (a.cwiseMax(b) - origin_) / cell_;
+  std::vector<size_t> candidates;
+  for (long y = clamped(lo.y(), ny_); y <= clamped(hi.y(), ny_); ++y)
+    for (long x = clamped(lo.x(), nx_); x <= clamped(hi.x(), nx_); ++x) {
+      const size_t c = cell_of(x, y);
+      candidates.insert(candidates.end(), items_.begin() + static_cast<long>(cell_start_[c]),
+                        items_.begin() + static_cast<long>(cell_start_[c + 1]));
+    }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  auto cross = [](const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const Vec2 ab = b - a;
+  for (size_t i : candidates) {
+    // a + t (b - a) = from + s (to - from), solved by Cramer's rule.
+    const Vec2 cd = to_[i] - from_[i], ac = from_[i] - a;
+    const double denom = cross(ab, cd);
+    if (std::abs(denom) <= 1e-12 * ab.norm() * cd.norm()) continue;  // parallel or degenerate
+    const double t = cross(ac, cd) / denom, s = cross(ac, ab) / denom;
+    constexpr double kEnds = 1e-12;  // a crossing exactly at a vertex belongs to both segments
+    if (t >= 0.0 && t <= 1.0 && s >= -kEnds && s <= 1.0 + kEnds) result.push_back(t);
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
 }  // namespace drycut::workload

@@ -2,6 +2,8 @@
 // Nearest-point queries against polylines in the XY plane: the segments are bucketed in a
 // uniform grid, and a query searches rings of cells outwards until no unexamined cell can hold
 // anything nearer. Used for the reference curve (dense polyline) and for tool-centre paths.
+// Crossing queries (where a query segment meets the polylines) examine only the cells under the
+// query segment's bounding box; a segment listed in several of them is tested once.
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -28,6 +30,10 @@ class PolylineIndex {
   void build();
   // Nothing found (distance infinite) when the index holds no segment.
   NearestHit nearest(const Vec2& query) const;
+  // Where the segment a-b meets the indexed segments: the fraction along a-b (0 = a) of each
+  // crossing, ascending. Parallel (also collinear) segments do not count; a crossing at a shared
+  // vertex may appear twice. Empty when the index holds no segment.
+  std::vector<double> crossings(const Vec2& a, const Vec2& b) const;
   size_t segment_count() const { return from_.size(); }
 
  private:

@@ -1,5 +1,6 @@
 #include "workload/deviation_program_run.hpp"
 
+#include "interp/block_compressor.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/loader_machine.hpp"
@@ -46,8 +47,10 @@ SampledProgram sample_program(const std::filesystem::path& main_program, const m
   SampledProgram result;
   PathSampler programmed(options.step_mm), tool_centre(options.step_mm);
   Diagnostics compensation_diagnostics;
+  // The cut path as the planner gets it: compensated, then compressed (COMPON/COMPCURV/COMPCAD).
+  interp::BlockCompressor compressor(tool_centre, profile);
   std::optional<interp::CutterCompensation> compensation;
-  if (options.tool_centre) compensation.emplace(tool_centre, profile, compensation_diagnostics);
+  if (options.tool_centre) compensation.emplace(compressor, profile, compensation_diagnostics);
   TeeSink tee(programmed, compensation ? &*compensation : nullptr, result.compensation_alarm);
 
   parser::LoaderOptions loader_options;
@@ -58,9 +61,14 @@ SampledProgram sample_program(const std::filesystem::path& main_program, const m
   loader.open_main(main_program);
   interp::Interpreter interpreter(profile, tee, result.diagnostics);
   parser::Block block;
+  result.programmed_points.push_back({interpreter.position(), true, {}});
   try {
     while (loader.next(block)) {
       interpreter.execute(block);
+      if ((interpreter.position() - result.programmed_points.back().position).norm() > 1e-12)
+        result.programmed_points.push_back({interpreter.position(),
+                                            interpreter.state().motion == interp::MotionMode::Rapid,
+                                            BlockRef{block.file, block.line, block.text}});
       if (interpreter.ended()) break;
     }
   } catch (const AlarmError& e) {

@@ -13,8 +13,18 @@
 
 namespace drycut::workload {
 
+// A programmed end point: where the interpreter stands after a block that moved (machine
+// coordinates, as the elements), and whether the block was a rapid. Spline blocks give their
+// knots here, which the spline's own elements need not pass through (BSPLINE).
+struct ProgrammedPoint {
+  Vec3 position = Vec3::Zero();
+  bool rapid = false;
+  BlockRef source;  // the block that ends here (none for the start position)
+};
+
 struct SampledProgram {
   std::vector<SampledElement> programmed;
+  std::vector<ProgrammedPoint> programmed_points;  // the start position first (as a rapid)
   std::vector<SampledElement> tool_centre;
   std::optional<Alarm> program_alarm;       // the run stopped here
   std::optional<Alarm> compensation_alarm;  // the tool-centre path stops here

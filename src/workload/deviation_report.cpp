@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "workload/deviation_held_line.hpp"
+
 namespace drycut::workload {
 namespace {
 
@@ -41,10 +43,10 @@ DeviationStats programmed_stats(const std::vector<Vec3>& samples, const Referenc
   return acc.result();
 }
 
-PolylineIndex tool_index(const std::vector<Vec3>& tool_centre) {
+PolylineIndex xy_index(const std::vector<Vec3>& path) {
   std::vector<Vec2> points;
-  points.reserve(tool_centre.size());
-  for (const Vec3& p : tool_centre) points.push_back(xy(p));
+  points.reserve(path.size());
+  for (const Vec3& p : path) points.push_back(xy(p));
   PolylineIndex index;
   index.add_polyline(points, false);
   index.build();
@@ -65,6 +67,8 @@ DeviationStats tool_cut_stats(const PolylineIndex& tool, double radius, const Re
   return acc.result();
 }
 
+nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
 nlohmann::json stats_json(const DeviationStats& s, bool signed_values) {
   nlohmann::json j{{"samples", s.samples}, {"max_mm", s.max_mm}, {"mean_mm", s.mean_mm}, {"rms_mm", s.rms_mm}};
   if (signed_values) {
@@ -81,13 +85,48 @@ nlohmann::json pass_json(const PassDeviation& p) {
   return j;
 }
 
-nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+// The control points on the bottom loop: held-line crossings with its programmed contour and
+// with the edge its tool cuts.
+void evaluate_control_points(const ContourPass& bottom, double tool_radius_mm,
+                             const std::vector<ControlPoint>& control_points, DeviationReport& report) {
+  report.control_pass = bottom.name;
+  const double range = report.held_line_range_mm;
+  const PolylineIndex programmed = xy_index(bottom.programmed);
+  const bool with_tool = tool_radius_mm > 0 && !bottom.tool_centre.empty();
+  const PolylineIndex tool = with_tool ? xy_index(bottom.tool_centre) : PolylineIndex{};
+  std::vector<std::optional<double>> programmed_diffs, tool_diffs;
+  for (const ControlPoint& cp : control_points) {
+    ControlPointRow row{cp, held_line_polyline_crossing(programmed, cp, range), std::nullopt};
+    if (with_tool) row.tool_cut_mm = held_line_cut_crossing(tool, tool_radius_mm, programmed, cp, range);
+    programmed_diffs.push_back(row.programmed_mm);
+    tool_diffs.push_back(row.tool_cut_mm);
+    report.control_points.push_back(row);
+  }
+  report.programmed_mae = control_point_mae(programmed_diffs);
+  if (with_tool) report.tool_cut_mae = control_point_mae(tool_diffs);
+}
+
+nlohmann::json mae_json(const ControlPointMae& m) {
+  return {{"mae_mm", optional_json(m.mae_mm)}, {"measured", m.measured}, {"without_crossing", m.without_crossing}};
+}
+
+// "0.1234 mm over 10 of 11 points, 1 without crossing within 5 mm"
+std::string mae_text(const ControlPointMae& m, double range_mm) {
+  char b[160];
+  if (m.mae_mm) std::snprintf(b, sizeof b, "%.4f mm", *m.mae_mm);
+  else std::snprintf(b, sizeof b, "-");
+  std::string out = b;
+  std::snprintf(b, sizeof b, " over %zu of %zu points, %zu without crossing within %g mm", m.measured, m.points,
+                m.without_crossing, range_mm);
+  return out + b;
+}
 
 }  // namespace
 
 DeviationReport evaluate_deviation(const ContourSplit& split, const ReferenceContour& reference,
-                                   const std::vector<ControlPoint>& control_points) {
+                                   const std::vector<ControlPoint>& control_points, double held_line_range_mm) {
   DeviationReport report;
+  report.held_line_range_mm = held_line_range_mm;
   report.reference_length_mm = reference.length();
   report.tool_radius_mm = split.tool_radius_mm;
   report.contour_elements = split.contour_elements;
@@ -101,7 +140,7 @@ DeviationReport evaluate_deviation(const ContourSplit& split, const ReferenceCon
     row.mean_z_mm = pass.mean_z_mm;
     row.programmed = programmed_stats(pass.programmed, reference);
     if (split.tool_radius_mm > 0 && !pass.tool_centre.empty())
-      row.tool_cut = tool_cut_stats(tool_index(pass.tool_centre), split.tool_radius_mm, reference, pass.u_low,
+      row.tool_cut = tool_cut_stats(xy_index(pass.tool_centre), split.tool_radius_mm, reference, pass.u_low,
                                     pass.u_high);
     report.passes.push_back(std::move(row));
     all_programmed.insert(all_programmed.end(), pass.programmed.begin(), pass.programmed.end());
@@ -113,22 +152,9 @@ DeviationReport evaluate_deviation(const ContourSplit& split, const ReferenceCon
   report.all.mean_z_mm = z_sum / static_cast<double>(all_programmed.size());
   report.all.full_loop = std::any_of(split.passes.begin(), split.passes.end(), [](auto& p) { return p.full_loop; });
   if (split.tool_radius_mm > 0 && !all_tool.empty())
-    report.all.tool_cut = tool_cut_stats(tool_index(all_tool), split.tool_radius_mm, reference, 0.0, 1.0);
+    report.all.tool_cut = tool_cut_stats(xy_index(all_tool), split.tool_radius_mm, reference, 0.0, 1.0);
 
-  const ContourPass& bottom = split.passes[split.bottom_loop];
-  report.control_pass = bottom.name;
-  const bool with_tool = split.tool_radius_mm > 0 && !bottom.tool_centre.empty();
-  const PolylineIndex bottom_tool = with_tool ? tool_index(bottom.tool_centre) : PolylineIndex{};
-  std::vector<std::optional<double>> programmed_diffs, tool_diffs;
-  for (const ControlPoint& cp : control_points) {
-    ControlPointRow row{cp, polyline_difference(bottom.programmed, cp), std::nullopt};
-    if (with_tool) row.tool_cut_mm = tool_cut_difference(bottom_tool, split.tool_radius_mm, cp);
-    programmed_diffs.push_back(row.programmed_mm);
-    tool_diffs.push_back(row.tool_cut_mm);
-    report.control_points.push_back(row);
-  }
-  report.control_point_mae_mm = mean_absolute_error(programmed_diffs);
-  report.tool_cut_control_point_mae_mm = mean_absolute_error(tool_diffs);
+  evaluate_control_points(split.passes[split.bottom_loop], split.tool_radius_mm, control_points, report);
   return report;
 }
 
@@ -141,25 +167,32 @@ nlohmann::json to_json(const DeviationReport& r) {
   for (const auto& p : r.passes) j["passes"].push_back(pass_json(p));
   j["all_passes"] = pass_json(r.all);
   j["control_point_pass"] = r.control_pass;
-  j["control_point_mae_mm"] = optional_json(r.control_point_mae_mm);
-  j["tool_cut_control_point_mae_mm"] = optional_json(r.tool_cut_control_point_mae_mm);
+  j["control_point_mae_mm"] = optional_json(r.programmed_mae.mae_mm);
+  j["tool_cut_control_point_mae_mm"] = optional_json(r.tool_cut_mae ? r.tool_cut_mae->mae_mm : std::nullopt);
+  j["held_line_range_mm"] = r.held_line_range_mm;
+  j["control_point_summary"] = {{"points", r.control_points.size()},
+                                {"programmed", mae_json(r.programmed_mae)},
+                                {"tool_cut", r.tool_cut_mae ? mae_json(*r.tool_cut_mae) : nlohmann::json(nullptr)}};
   j["control_points"] = nlohmann::json::array();
   for (const auto& row : r.control_points)
     j["control_points"].push_back({{"x_mm", row.point.nominal.x()},
                                    {"y_mm", row.point.nominal.y()},
                                    {"hold", row.point.hold_x ? "x" : "y"},
                                    {"programmed_difference_mm", optional_json(row.programmed_mm)},
-                                   {"tool_cut_difference_mm", optional_json(row.tool_cut_mm)}});
+                                   {"programmed_crossing", row.programmed_mm.has_value()},
+                                   {"tool_cut_difference_mm", optional_json(row.tool_cut_mm)},
+                                   {"tool_cut_crossing", r.tool_cut_mae ? nlohmann::json(row.tool_cut_mm.has_value())
+                                                                        : nlohmann::json(nullptr)}});
   return j;
 }
 
 std::string format_table(const DeviationReport& r) {
   std::string out;
   char line[256];
-  auto cell = [](const std::optional<double>& v) {
+  auto cell = [](const std::optional<double>& v, const char* missing = "-") {
     char b[32];
     if (v) std::snprintf(b, sizeof b, "%9.4f", *v);
-    else std::snprintf(b, sizeof b, "%9s", "-");
+    else std::snprintf(b, sizeof b, "%9s", missing);
     return std::string(b);
   };
   std::snprintf(line, sizeof line, "reference length %.4f mm, tool radius %.3f mm, %zu contour elements\n",
@@ -180,14 +213,15 @@ std::string format_table(const DeviationReport& r) {
   for (const auto& p : r.passes) row(p);
   if (!r.passes.empty()) row(r.all);
   if (!r.control_points.empty()) {
-    out += "control points on " + r.control_pass + " (difference contour - point, mm):\n";
+    out += "control points on " + r.control_pass + " (difference contour - point along the held line, mm; none: no crossing):\n";
     out += "        x         y hold  programmed  tool cut\n";
     for (const auto& c : r.control_points) {
       std::snprintf(line, sizeof line, "%9.3f %9.3f  %s  ", c.point.nominal.x(), c.point.nominal.y(),
                     c.point.hold_x ? "x" : "y");
-      out += line + cell(c.programmed_mm) + "  " + cell(c.tool_cut_mm) + "\n";
+      out += line + cell(c.programmed_mm, "none") + "  " + cell(c.tool_cut_mm, r.tool_cut_mae ? "none" : "-") + "\n";
     }
-    out += "control-point MAE         " + cell(r.control_point_mae_mm) + "  " + cell(r.tool_cut_control_point_mae_mm) + "\n";
+    out += "control-point MAE programmed " + mae_text(r.programmed_mae, r.held_line_range_mm) + "\n";
+    if (r.tool_cut_mae) out += "control-point MAE tool cut   " + mae_text(*r.tool_cut_mae, r.held_line_range_mm) + "\n";
   }
   return out;
 }

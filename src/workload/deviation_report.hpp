@@ -2,7 +2,8 @@
 // Deviation of a program's contour from the reference curve: per pass and over all passes, for
 // the programmed contour (normal distance of each path sample to the curve) and for the surface
 // the tool cuts (for each curve sample: distance to the tool-centre path minus the tool radius,
-// > 0 material left, < 0 gouge), plus the control-point MAE on the bottom loop.
+// > 0 material left, < 0 gouge), plus the control-point MAE on the bottom loop (held-line
+// crossings, deviation_held_line.hpp; points without a crossing are counted, not averaged).
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,8 +33,11 @@ struct PassDeviation {
 
 struct ControlPointRow {
   ControlPoint point;
-  std::optional<double> programmed_mm, tool_cut_mm;
+  std::optional<double> programmed_mm, tool_cut_mm;  // nullopt: no crossing (tool cut: or not judged)
 };
+
+// How far along the held line a crossing is looked for, on either side of the point.
+inline constexpr double kDefaultHeldLineRangeMm = 5.0;
 
 struct DeviationReport {
   double reference_length_mm = 0.0;
@@ -43,11 +47,14 @@ struct DeviationReport {
   PassDeviation all;                  // every pass together (tool cut: the envelope of all passes)
   std::string control_pass;           // the pass the control points are taken on
   std::vector<ControlPointRow> control_points;
-  std::optional<double> control_point_mae_mm, tool_cut_control_point_mae_mm;
+  double held_line_range_mm = kDefaultHeldLineRangeMm;
+  ControlPointMae programmed_mae;
+  std::optional<ControlPointMae> tool_cut_mae;  // nullopt: no compensation, the cut is not judged
 };
 
 DeviationReport evaluate_deviation(const ContourSplit& split, const ReferenceContour& reference,
-                                   const std::vector<ControlPoint>& control_points);
+                                   const std::vector<ControlPoint>& control_points,
+                                   double held_line_range_mm = kDefaultHeldLineRangeMm);
 
 nlohmann::json to_json(const DeviationReport& report);
 // The printed table (one row per pass and one for all passes, then the control points).

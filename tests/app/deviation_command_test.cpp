@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +48,42 @@ TEST_F(DeviationCommand, CircleAgainstPolarReferenceWritesJson) {
   EXPECT_LT(j["all_passes"]["programmed"]["max_mm"].get<double>(), 1e-5);
   EXPECT_LT(j["control_point_mae_mm"].get<double>(), 1e-5);
   EXPECT_EQ(j["control_points"].size(), 2u);
+  EXPECT_EQ(j["held_line_range_mm"].get<double>(), 5.0);
+  EXPECT_EQ(j["control_point_summary"]["programmed"]["measured"].get<int>(), 2);
+  EXPECT_NE(out.find("over 2 of 2 points, 0 without crossing within 5 mm"), std::string::npos) << out;
+}
+
+TEST_F(DeviationCommand, HeldLineRangeDecidesWhatCountsAsACrossing) {
+  // Circle r = 10 against the reference r = 10.5 (--polar 10.5): the point (-6, 9.5) holds Y;
+  // the circle meets y = 9.5 at x = -sqrt(100 - 90.25) = -3.1225, 2.8775 mm away.
+  std::ofstream(dir_ / "C.MPF") << "N10 G1 X10 Y0 Z0 F1000\nN20 G3 X10 Y0 I-10 J0\nN30 M30\n";
+  std::ofstream(dir_ / "cp.csv") << "-6,9.5\n";
+  const std::string base = "deviation '" + (dir_ / "C.MPF").string() + "' --polar 10.5 --capture 1 --control-points '" +
+                           (dir_ / "cp.csv").string() + "'";
+  std::string near, far;
+  ASSERT_EQ(run(base + " --held-line-range 2", near), 0) << near;
+  EXPECT_NE(near.find("over 0 of 1 points, 1 without crossing within 2 mm"), std::string::npos) << near;
+  ASSERT_EQ(run(base + " --held-line-range 3 --json '" + (dir_ / "d.json").string() + "'", far), 0) << far;
+  std::ifstream in(dir_ / "d.json");
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_NEAR(j["control_points"][0]["programmed_difference_mm"].get<double>(), 6 - std::sqrt(100 - 90.25), 1e-5);
+}
+
+TEST_F(DeviationCommand, ProgrammedPointsShowWhereASplineLeavesItsPoints) {
+  // G64 lines: the path is the polyline. ASPLINE through the same zigzag: through every knot,
+  // off the polyline between them.
+  const std::string zigzag = "X10 Y5\nX20 Y0\nX30 Y5\nX40 Y0\nM30\n";
+  std::ofstream(dir_ / "L.MPF") << "G0 X0 Y0 Z0\nG64 G1 F1000\n" << zigzag;
+  std::ofstream(dir_ / "A.MPF") << "G0 X0 Y0 Z0\nG1 F1000\nASPLINE\n" << zigzag;
+  std::string lines, spline;
+  ASSERT_EQ(run("deviation '" + (dir_ / "L.MPF").string() + "' --programmed-points", lines), 0) << lines;
+  EXPECT_NE(lines.find("path -> programmed polyline: max 0.0000 mm"), std::string::npos) << lines;
+  EXPECT_NE(lines.find("programmed points -> path:   max 0.0000 mm"), std::string::npos) << lines;
+  ASSERT_EQ(run("deviation '" + (dir_ / "A.MPF").string() + "' --programmed-points", spline), 0) << spline;
+  EXPECT_EQ(spline.find("path -> programmed polyline: max 0.0000 mm"), std::string::npos) << spline;
+  EXPECT_NE(spline.find("programmed points -> path:   max 0.0000 mm"), std::string::npos) << spline;
+  std::string refused;
+  EXPECT_EQ(run("deviation '" + (dir_ / "A.MPF").string() + "' --programmed-points --polar 10", refused), 2);
 }
 
 TEST_F(DeviationCommand, MissingProgramIsUsageErrorAndBadExpressionAnAlarm) {
@@ -65,6 +102,44 @@ TEST_F(DeviationCommand, SweepFindsThePolygonCountOfACircle) {
   // n = ceil(pi / acos(1 - 0.1/10)) = 23
   EXPECT_EQ(j["methods"][0]["knots"].get<int>(), 23);
   EXPECT_GT(j["methods"][0]["time_after_m0_s"].get<double>(), 0.0);
+}
+
+}  // namespace
+
+namespace {
+
+// `--programmed-points`: the planned path against the program's own points. A circle R20 in 0.5 mm
+// chords under COMPCAD (MD33100 0.1 mm per axis in the default profile) strays from the chords,
+// but by less than the tolerance band (per axis 0.1 mm: at most 0.1*sqrt(2) in XY); without the
+// compressor the planned path is the programmed one.
+TEST_F(DeviationCommand, ProgrammedMeasuresTheCompressedPathAgainstTheProgram) {
+  for (const char* mode : {"COMPOF", "COMPCAD"}) {
+    std::ofstream p(dir_ / (std::string(mode) + ".MPF"));
+    p << "G0 X20 Y0 Z0\nG64 " << mode << " F3000\n";
+    for (int i = 1; i <= 252; ++i)
+      p << "G1 X" << 20 * std::cos(i * 2 * M_PI / 252) << " Y" << 20 * std::sin(i * 2 * M_PI / 252) << "\n";
+    p << "M30\n";
+    p.close();
+    std::string out;
+    const fs::path json = dir_ / (std::string(mode) + ".json");
+    ASSERT_EQ(run("deviation '" + (dir_ / (std::string(mode) + ".MPF")).string() + "' --programmed-points --json '" +
+                      json.string() + "'",
+                  out),
+              0)
+        << out;
+    const auto j = nlohmann::json::parse(std::ifstream(json));
+    const double path = j["path_to_polyline"]["max_mm"].get<double>(), points = j["points_to_path"]["max_mm"].get<double>();
+    EXPECT_GT(j["path_to_polyline"]["count"].get<int>(), 1000);
+    EXPECT_EQ(j["points_to_path"]["count"].get<int>(), 253);  // the start position and the 252 end points
+    if (std::string(mode) == "COMPOF") {
+      EXPECT_LT(path, 1e-9);
+      EXPECT_LT(points, 1e-9);
+    } else {
+      EXPECT_GT(path, 1e-6);  // the compressed path does leave the chords
+      EXPECT_LE(path, 0.1 * std::sqrt(2.0));
+      EXPECT_LE(points, 0.1 * std::sqrt(2.0));
+    }
+  }
 }
 
 }  // namespace

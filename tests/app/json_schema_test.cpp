@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <sstream>
 
 #include "json_schema_subset.hpp"
@@ -118,6 +119,45 @@ TEST_F(JsonSchemas, EveryNdjsonLineMatchesTheSchema) {
   }
 }
 
+// A compressor span's row carries two more columns (compressed blocks, deviation), in both
+// layouts: ten collinear 1 mm blocks under COMPCAD are one span of 10 blocks, deviation 0.
+TEST_F(JsonSchemas, CompressedSpanRowsCarryBlocksAndDeviation) {
+  std::string text = "G0 X0 Y0 Z0\nG64 COMPCAD F3000\n";
+  for (int i = 1; i <= 10; ++i) text += "G1 X" + std::to_string(i) + "\n";
+  write_file(dir_.path / "COMP.MPF", text + "M30\n");
+  const fs::path out = dir_.path / "comp.json";
+  ASSERT_EQ(run_drycut("run -q " + quoted(program("COMP.MPF")) + " --json " + quoted(out)).exit_code, 0);
+  const json j = json::parse(read_file(out));
+  JsonSchemaSubset schema(kSchemas, "run.schema.json");
+  EXPECT_TRUE(schema.validate(j).empty()) << errors_text(schema.validate(j));
+  int spans = 0;
+  for (const auto& row : j["blocks"]) {
+    if (row[2] != "COMPCAD") {
+      EXPECT_EQ(row.size(), 9u) << row.dump();
+      continue;
+    }
+    ++spans;
+    ASSERT_EQ(row.size(), 11u) << row.dump();
+    EXPECT_EQ(row[9], 10);
+    EXPECT_NEAR(row[10].get<double>(), 0.0, 1e-9);
+    EXPECT_NEAR(row[4].get<double>(), 10.0, 1e-6);
+  }
+  EXPECT_EQ(spans, 1);
+  const CliRun r = run_drycut("run -q " + quoted(program("COMP.MPF")) + " --ndjson -");
+  JsonSchemaSubset lines_schema(kSchemas, "run-ndjson.schema.json");
+  std::istringstream lines(r.out);
+  std::string line;
+  int compressed_lines = 0;
+  while (std::getline(lines, line)) {
+    const json l = json::parse(line);
+    EXPECT_TRUE(lines_schema.validate(l).empty()) << line;
+    if (!l.contains("compressed_blocks")) continue;
+    ++compressed_lines;
+    EXPECT_EQ(l["compressed_blocks"], 10);
+  }
+  EXPECT_EQ(compressed_lines, 1);
+}
+
 TEST_F(JsonSchemas, CheckOutputMatchesTheSchema) {
   JsonSchemaSubset schema(kSchemas, "check.schema.json");
   for (const char* name : {"MAIN.MPF", "STOPS.MPF"}) {
@@ -125,6 +165,42 @@ TEST_F(JsonSchemas, CheckOutputMatchesTheSchema) {
     const json j = json::parse(r.out);
     EXPECT_TRUE(schema.validate(j).empty()) << name << "\n" << errors_text(schema.validate(j));
   }
+}
+
+TEST_F(JsonSchemas, DeviationOutputMatchesTheSchema) {
+  // A circle r = 10 cut with G42 (tool judged) and without (not judged); the point (0, 10.5)
+  // holds Y and its line passes over the circle: no crossing, counted.
+  write_file(dir_.path / "CUT.MPF",
+             "T=\"FR_4\"\nM6\nG1 X15 Y0 Z0 F1000\nG42 G1 X10 Y0\nG3 X10 Y0 I-10 J0\nG40 G1 X15 Y0\nM30\n");
+  write_file(dir_.path / "LINE.MPF", "G1 X10 Y0 Z0 F1000\nG3 X10 Y0 I-10 J0\nM30\n");
+  write_file(dir_.path / "cp.csv", "0,10.5\n-6,8\n0,10,x\n");
+  JsonSchemaSubset schema(kSchemas, "deviation.schema.json");
+  for (const char* name : {"CUT.MPF", "LINE.MPF"}) {
+    const fs::path out = dir_.path / "d.json";
+    const CliRun r = run_drycut("deviation " + quoted(program(name)) + " --polar 10 --control-points " +
+                                quoted(dir_.path / "cp.csv") + " --json " + quoted(out));
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    std::ifstream in(out);
+    const json j = json::parse(in);
+    EXPECT_TRUE(schema.validate(j).empty()) << name << "\n" << errors_text(schema.validate(j));
+    EXPECT_EQ(j["control_point_summary"]["programmed"]["without_crossing"].get<int>(), 1) << name;
+  }
+}
+
+TEST_F(JsonSchemas, DeviationProgrammedPointsMatchesTheSchema) {
+  // A square of G1 blocks rounded by nothing: the path is the polyline (0 both ways).
+  write_file(dir_.path / "SQ.MPF", "G0 X0 Y0 Z5\nG1 Z0 F1000\nX10\nY10\nX0\nY0\nG0 Z5\nM30\n");
+  JsonSchemaSubset schema(kSchemas, "deviation-points.schema.json");
+  const fs::path out = dir_.path / "p.json";
+  const CliRun r = run_drycut("deviation " + quoted(program("SQ.MPF")) + " --programmed-points --json " + quoted(out));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  std::ifstream in(out);
+  const json j = json::parse(in);
+  EXPECT_TRUE(schema.validate(j).empty()) << errors_text(schema.validate(j));
+  EXPECT_EQ(j["programmed_points"].get<int>(), 6);  // (0,0,5) and the five feed end points
+  EXPECT_EQ(j["polylines"].get<int>(), 1);
+  EXPECT_LT(j["path_to_polyline"]["max_mm"].get<double>(), 1e-9);
+  EXPECT_LT(j["points_to_path"]["max_mm"].get<double>(), 1e-9);
 }
 
 TEST_F(JsonSchemas, RegressBaselineMatchesTheSchema) {

@@ -3,7 +3,7 @@
 // (`; expect: ok`, `; expect-warning: N`, `; expect-end: X.. Y.. Z..`, `; expect-time: T tol D`);
 // this reads them and checks `drycut check`, `drycut run --json` and `drycut path --elements`.
 // (The shared conformance runner takes these programs over once it exists; this keeps the
-// cycles' numbers checked until then.) Plus: CYCLE832 means G642 SOFT, and
+// cycles' numbers checked until then.) Plus: CYCLE832 means its CUST_832 settings, and
 // --no-standard-cycles leaves the cycles out of the search path.
 #include <gtest/gtest.h>
 
@@ -131,15 +131,26 @@ class CycleRuns : public ::testing::Test {
   fs::path dir_;
 };
 
-// What drycut models of CYCLE832 (docs/cycles.md) is G642 + SOFT: a corner-rich contour takes
-// exactly as long either way.
-TEST_F(CycleRuns, Cycle832TakesAsLongAsG642Soft) {
+// CYCLE832 (docs/cycles.md) programs CTOL and calls CUST_832, whose default for finishing is
+// G642 SOFT COMPCAD FFWON DYNFINISH: a corner-rich contour takes exactly as long either way.
+TEST_F(CycleRuns, Cycle832TakesAsLongAsItsSettingsWrittenOut) {
   const std::string contour = "G1 X10 Y0.2\nX20 Y-0.2\nX30 Y0.3\nX40 Y0\nY10\nX0\nM30\n";
   const double by_cycle = time_of("BY_CYCLE.MPF", "G17 G90 G94 F3000\nG0 Z0\nCYCLE832(0.01,1)\n" + contour);
-  const double written = time_of("WRITTEN.MPF", "G17 G90 G94 F3000\nG0 Z0\nG642 SOFT\n" + contour);
+  const double written =
+      time_of("WRITTEN.MPF", "G17 G90 G94 F3000\nG0 Z0\nCTOL=0.01 OTOL=-1\nG642 SOFT COMPCAD FFWON DYNFINISH\n" + contour);
   const double brisk = time_of("BRISK.MPF", "G17 G90 G94 F3000\nG0 Z0\n" + contour);
   EXPECT_DOUBLE_EQ(by_cycle, written);
   EXPECT_NE(by_cycle, brisk);  // the settings do shape the time
+}
+
+// A machine builder's CUST_832 beside the program replaces drycut's default: here finishing
+// selects exact stop and BRISK, so the cycle's run takes as long as the plain G60 BRISK one.
+TEST_F(CycleRuns, OwnCust832ReplacesTheDefault) {
+  std::ofstream(dir_ / "CUST_832.SPF") << "PROC CUST_832(INT _MODE)\nG60 BRISK\nM17\n";
+  const std::string contour = "G1 X10 Y0.2\nX20 Y-0.2\nX30 Y0.3\nM30\n";
+  const double by_cycle = time_of("OWN.MPF", "G17 G90 G94 F3000\nG0 Z0\nG64 SOFT\nCYCLE832(0.01,1)\n" + contour);
+  const double exact = time_of("EXACT.MPF", "G17 G90 G94 F3000\nG0 Z0\nG60 BRISK\n" + contour);
+  EXPECT_DOUBLE_EQ(by_cycle, exact);
 }
 
 TEST_F(CycleRuns, NoStandardCyclesLeavesThemOutOfTheSearchPath) {

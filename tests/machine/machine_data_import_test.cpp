@@ -196,13 +196,15 @@ TEST(MachineDataImport, RequiredAxisValuesMissingTakeTheFallback) {
 TEST(MachineDataImport, UnmappedDataKeptUnderMachineDataByTheirProgramName) {
   const MachineDataImport r = import_test_file();
   const auto& md = r.profile.machine_data;
-  EXPECT_DOUBLE_EQ(md.at("$MA_COMPRESS_POS_TOL[X1]"), 0.01);  // axis index as the machine axis name
   EXPECT_DOUBLE_EQ(md.at("$MN_MM_NUM_GUD_MODULES"), 7.0);
   EXPECT_DOUBLE_EQ(md.at("$MC_MM_NUM_R_PARAM"), 300.0);
   EXPECT_DOUBLE_EQ(md.at("$MA_GEAR_STEP_SPEEDCTRL_ACCEL[0,SP1]"), 30.0);  // gear stage 0: not the one used
   EXPECT_EQ(md.count("$MA_MAX_AX_VELO[X1]"), 0u);  // mapped data are answered from the profile fields
   EXPECT_EQ(r.kept, static_cast<int>(md.size()));
-  EXPECT_EQ(r.sources.at("machine_data.$MA_COMPRESS_POS_TOL[X1]").origin, kFile + ":58");
+  // MD33100 is mapped: the compressor tolerance of X (written with the machine axis name X1).
+  EXPECT_EQ(md.count("$MA_COMPRESS_POS_TOL[X1]"), 0u);
+  EXPECT_DOUBLE_EQ(r.profile.axes[0].compress_pos_tol_mm, 0.01);
+  EXPECT_EQ(r.sources.at("axes.X.compress_pos_tol_mm").origin, kFile + ":58");
   // Programs read both through the one map: profile fields under their MD names plus the rest.
   const auto values = machine_data_values(r.profile);
   EXPECT_DOUBLE_EQ(values.at("$MA_MAX_AX_VELO[X1]"), 30000.0);
@@ -250,6 +252,20 @@ TEST(MachineDataImport, HostileInputNeverCrashes) {
   } catch (const ProfileError&) {
     // A value the profile refuses is a clean error, which is also fine.
   }
+}
+
+// The elements 1..5 of the dynamic data become factors on element 0: per axis datum the smallest
+// ratio over X, Y, Z. Hand computation: MD32300 element 4 (DYNFINISH) X 1.5 / 3 = 0.5, Y 2 / 2.5 =
+// 0.8, Z 1 / 2 = 0.5 -> 0.5; MD20600 element 2 (DYNROUGH) 40 / 20 = 2.
+TEST(MachineDataImport, DynamicGroupFactorsFromTheArrayElements) {
+  const MachineProfile p = import_text(
+      "$MA_MAX_AX_ACCEL[0,AX1]=3\n$MA_MAX_AX_ACCEL[0,AX2]=2.5\n$MA_MAX_AX_ACCEL[0,AX3]=2\n"
+      "$MA_MAX_AX_ACCEL[4,AX1]=1.5\n$MA_MAX_AX_ACCEL[4,AX2]=2\n$MA_MAX_AX_ACCEL[4,AX3]=1\n"
+      "$MC_MAX_PATH_JERK[0]=20\n$MC_MAX_PATH_JERK[2]=40\n").profile;
+  EXPECT_DOUBLE_EQ(p.dynamic_groups[static_cast<size_t>(DynamicGroup::Finish)].max_ax_accel, 0.5);
+  EXPECT_DOUBLE_EQ(p.dynamic_groups[static_cast<size_t>(DynamicGroup::Rough)].max_path_jerk, 2.0);
+  EXPECT_DOUBLE_EQ(p.dynamic_groups[static_cast<size_t>(DynamicGroup::Rough)].max_ax_accel, 1.0);
+  EXPECT_DOUBLE_EQ(p.dynamic_groups[static_cast<size_t>(DynamicGroup::Pos)].max_ax_jerk, 1.0);
 }
 
 }  // namespace

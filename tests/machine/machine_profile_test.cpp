@@ -300,5 +300,38 @@ TEST(LoadProfile, PathJerkDefaultsToSmallestAxisJerk) {
   EXPECT_DOUBLE_EQ(p.path_jerk_mm_s3, 20000.0);
 }
 
+// G group 59: the profile gives DYNPOS ... DYNPREC as factors on the DYNNORM values; a group or
+// factor not given is 1, and the factors survive the round trip.
+TEST(LoadProfile, DynamicGroupsAreFactorsOnTheNormValues) {
+  json j = small_profile();
+  j["dynamic_groups"] = {{"DYNFINISH", {{"max_ax_accel_factor", 0.6}, {"max_path_jerk_factor", 0.5}}},
+                         {"DYNROUGH", {{"max_ax_jerk_factor", 2}, {"path_trans_jerk_lim_factor", 3}}}};
+  const MachineProfile p = load_profile_json(j.dump(), "t");
+  const auto& finish = p.dynamic_groups[static_cast<size_t>(DynamicGroup::Finish)];
+  const auto& rough = p.dynamic_groups[static_cast<size_t>(DynamicGroup::Rough)];
+  const auto& pos = p.dynamic_groups[static_cast<size_t>(DynamicGroup::Pos)];
+  EXPECT_DOUBLE_EQ(finish.max_ax_accel, 0.6);
+  EXPECT_DOUBLE_EQ(finish.max_path_jerk, 0.5);
+  EXPECT_DOUBLE_EQ(finish.max_ax_jerk, 1.0);
+  EXPECT_DOUBLE_EQ(rough.max_ax_jerk, 2.0);
+  EXPECT_DOUBLE_EQ(rough.path_trans_jerk_lim, 3.0);
+  EXPECT_DOUBLE_EQ(pos.max_ax_accel, 1.0);
+  const MachineProfile back = load_profile_json(profile_to_json(p), "back");
+  EXPECT_DOUBLE_EQ(back.dynamic_groups[static_cast<size_t>(DynamicGroup::Finish)].max_ax_accel, 0.6);
+  EXPECT_DOUBLE_EQ(back.dynamic_groups[static_cast<size_t>(DynamicGroup::Rough)].path_trans_jerk_lim, 3.0);
+}
+
+TEST(LoadProfile, DynamicGroupErrorsNameTheKey) {
+  json j = small_profile();
+  j["dynamic_groups"] = {{"DYNNORM", {{"max_ax_accel_factor", 2}}}};
+  EXPECT_NE(error_of(j).find("dynamic_groups.DYNNORM"), std::string::npos) << error_of(j);
+  j["dynamic_groups"] = {{"DYNFAST", {{"max_ax_accel_factor", 2}}}};
+  EXPECT_NE(error_of(j).find("dynamic_groups.DYNFAST: not a group"), std::string::npos) << error_of(j);
+  j["dynamic_groups"] = {{"DYNPOS", {{"accel", 2}}}};
+  EXPECT_NE(error_of(j).find("dynamic_groups.DYNPOS.accel"), std::string::npos) << error_of(j);
+  j["dynamic_groups"] = {{"DYNPOS", {{"max_ax_accel_factor", 0}}}};
+  EXPECT_NE(error_of(j).find("dynamic_groups.DYNPOS.max_ax_accel_factor"), std::string::npos) << error_of(j);
+}
+
 }  // namespace
 }  // namespace drycut::machine

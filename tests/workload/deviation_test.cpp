@@ -91,10 +91,34 @@ TEST_F(DeviationTest, ControlPointsMeasureTheXDifferenceAtHeldY) {
               -(std::sqrt(10.1 * 10.1 - points[1].nominal.y() * points[1].nominal.y()) -
                 std::sqrt(100 - points[1].nominal.y() * points[1].nominal.y())),
               1e-5);  // the arc is judged as a polyline of 0.01 mm chords
-  ASSERT_TRUE(r.control_point_mae_mm);
-  EXPECT_NEAR(*r.control_point_mae_mm, expected_sum / 6.0, 1e-5);
+  ASSERT_TRUE(r.programmed_mae.mae_mm);
+  EXPECT_NEAR(*r.programmed_mae.mae_mm, expected_sum / 6.0, 1e-5);
+  EXPECT_EQ(r.programmed_mae.without_crossing, 0u);
+  EXPECT_FALSE(r.tool_cut_mae);  // no compensation: the cut is not judged
   EXPECT_NEAR(r.passes[0].programmed.max_mm, 0.1, 1e-6);
   EXPECT_NEAR(r.passes[0].programmed.mean_mm, 0.1, 1e-6);
+}
+
+TEST_F(DeviationTest, PointsWithoutCrossingAreCountedNotDropped) {
+  // Circle r = 10.1: the held line y = 10.2 passes over it; y = 8 meets it at
+  // x = -sqrt(10.1^2 - 64) from the point (-6, 8).
+  const auto r = evaluate("N10 G1 X10.1 Y0 Z0 F1000\nN20 G3 X10.1 Y0 I-10.1 J0\nN30 M30\n", 10.0,
+                          {{Vec2(0, 10.2), false}, {Vec2(-6, 8), false}});
+  ASSERT_EQ(r.control_points.size(), 2u);
+  EXPECT_FALSE(r.control_points[0].programmed_mm);
+  EXPECT_EQ(r.programmed_mae.points, 2u);
+  EXPECT_EQ(r.programmed_mae.measured, 1u);
+  EXPECT_EQ(r.programmed_mae.without_crossing, 1u);
+  const double expected = -std::sqrt(10.1 * 10.1 - 64) + 6;
+  ASSERT_TRUE(r.programmed_mae.mae_mm);
+  EXPECT_NEAR(*r.programmed_mae.mae_mm, std::abs(expected), 1e-5);
+  const std::string table = format_table(r);
+  EXPECT_NE(table.find("over 1 of 2 points, 1 without crossing within 5 mm"), std::string::npos) << table;
+  EXPECT_NE(table.find("none"), std::string::npos) << table;
+  const auto j = to_json(r);
+  EXPECT_EQ(j["control_point_summary"]["programmed"]["without_crossing"].get<int>(), 1);
+  EXPECT_FALSE(j["control_points"][0]["programmed_crossing"].get<bool>());
+  EXPECT_TRUE(j["control_points"][0]["tool_cut_crossing"].is_null());
 }
 
 TEST_F(DeviationTest, CompensatedCircleCutsTheProgrammedContour) {

@@ -1,0 +1,132 @@
+#include "interp/block_compressor.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace drycut::interp {
+namespace {
+
+const char* compressor_label(Compressor mode) {
+  switch (mode) {
+    case Compressor::Compon: return "COMPON";
+    case Compressor::Compcurv: return "COMPCURV";
+    case Compressor::Compcad: return "COMPCAD";
+    case Compressor::Off: break;
+  }
+  return "COMPOF";
+}
+
+bool same_dynamics(const DynamicsMode& a, const DynamicsMode& b) {
+  return a.transition == b.transition && a.profile == b.profile && a.exact_stop_this_block == b.exact_stop_this_block;
+}
+
+// A straight G1 element of a simple block (not one the compensation inserted: a transition
+// circle or connector keeps its own geometry).
+bool compressible_line(const PathElement& e) {
+  return e.compressible && e.kind == ElementKind::Line && !e.inserted && e.curve && e.compressor != Compressor::Off;
+}
+
+}  // namespace
+
+BlockCompressor::BlockCompressor(ElementSink& next, const machine::MachineProfile& profile)
+    : next_(next), profile_(profile) {}
+
+geometry::CompressorFitOptions BlockCompressor::fit_options(const machine::MachineProfile& profile, Compressor mode) {
+  const machine::CompressorData& c = profile.compressor;
+  geometry::CompressorFitOptions o;
+  o.continuity = mode == Compressor::Compon ? geometry::FitContinuity::C1 : geometry::FitContinuity::C2;
+  // COMPON/COMPCURV join up to 10 blocks per polynomial; COMPCAD any number (FB1 B1).
+  o.max_segments_per_span = mode == Compressor::Compcad ? 0 : static_cast<size_t>(c.max_blocks_per_span);
+  // MD20482 units digit: 0/2 the axis tolerances MD33100, 1/3 the contour tolerance SD42475.
+  const int units = c.mode % 10;
+  o.contour_tolerance = units == 1 || units == 3;
+  o.contour_tol_mm = c.contur_tol_mm;
+  for (int i = 0; i < 3; ++i) o.axis_tol_mm[i] = profile.axes[static_cast<size_t>(i)].compress_pos_tol_mm;
+  // SD42470 is COMPCAD's corner angle; COMPON/COMPCURV detect no corners (a corner they cannot
+  // round within the tolerance stays a pair of straight blocks, compressor_fit.hpp step 6).
+  o.corner_angle_deg = mode == Compressor::Compcad ? c.crit_spline_angle_deg : 180.0;
+  return o;
+}
+
+bool BlockCompressor::joins_run(const PathElement& e) const {
+  if (points_.empty() || !compressible_line(e) || e.follows_other_block || e.compressor != run_mode_) return false;
+  const double length = e.curve->length();
+  if (length > profile_.compressor.block_path_limit_mm) return false;
+  if (std::abs(e.feed_mm_s - run_feed_mm_s_) > profile_.compressor.velo_tol_mm_s) return false;
+  if (!same_dynamics(e.dynamics, run_dynamics_) || e.feed_scale != run_feed_scale_) return false;
+  // A zero-length block joins only a run that has a segment for it to ride on.
+  if (length <= 0.0 && elements_.empty()) return false;
+  return (e.curve->start() - points_.back()).norm() <= 1e-9 * (1.0 + points_.back().norm());
+}
+
+void BlockCompressor::start_run(const PathElement& e) {
+  points_.assign(1, e.curve->start());
+  start_tangent_.reset();
+  run_mode_ = e.compressor;
+  run_feed_mm_s_ = e.feed_mm_s;
+  run_feed_scale_ = e.feed_scale;
+  run_dynamics_ = e.dynamics;
+}
+
+void BlockCompressor::consume(PathElement element) {
+  if (joins_run(element)) {
+    if (element.curve->length() > 0.0) points_.push_back(element.curve->end());
+    point_of_.push_back(points_.size() - 1);
+    elements_.push_back(std::move(element));
+    if (points_.size() > static_cast<size_t>(profile_.compressor.flush_points)) flush(true);
+    return;
+  }
+  flush(false);
+  if (compressible_line(element) && element.curve->length() > 0.0 &&
+      element.curve->length() <= profile_.compressor.block_path_limit_mm) {
+    start_run(element);
+    points_.push_back(element.curve->end());
+    point_of_.push_back(1);
+    elements_.push_back(std::move(element));
+    return;
+  }
+  next_.consume(std::move(element));
+}
+
+void BlockCompressor::finish() {
+  flush(false);
+  next_.finish();
+}
+
+void BlockCompressor::flush(bool carry) {
+  if (elements_.empty()) {
+    points_.clear();
+    return;
+  }
+  spans_.clear();
+  spans_ = geometry::fit_compressed_run(points_, fit_options(profile_, run_mode_), start_tangent_);
+  size_t next_element = 0;
+  for (const geometry::FittedSpan& span : spans_) {
+    const size_t begin = next_element;
+    while (next_element < elements_.size() && point_of_[next_element] <= span.last) ++next_element;
+    if (!span.curve) {
+      for (size_t i = begin; i < next_element; ++i) next_.consume(std::move(elements_[i]));
+      continue;
+    }
+    PathElement out = std::move(elements_[begin]);
+    out.kind = ElementKind::SplineSpan;
+    out.curve = span.curve;
+    out.label = compressor_label(run_mode_);
+    out.compressed_blocks = static_cast<uint32_t>(next_element - begin);
+    out.compress_deviation_mm = span.deviation_mm;
+    next_.consume(std::move(out));
+  }
+  const geometry::Vec3 last = points_.back();
+  const std::optional<geometry::Vec3> tangent =
+      spans_.empty() ? std::nullopt : std::optional<geometry::Vec3>(spans_.back().end_tangent);
+  elements_.clear();
+  point_of_.clear();
+  points_.clear();
+  if (carry) {
+    // The next window goes on from the last point with the tangent this one ended with.
+    points_.push_back(last);
+    start_tangent_ = tangent;
+  }
+}
+
+}  // namespace drycut::interp

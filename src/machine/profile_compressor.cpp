@@ -1,0 +1,50 @@
+#include "machine/profile_compressor.hpp"
+
+#include "machine/profile_object_reader.hpp"
+#include "machine/profile_units.hpp"
+
+namespace drycut::machine {
+
+using nlohmann::json;
+
+void read_compressor(const json& node, MachineProfile& p) {
+  ProfileObjectReader r(node, "compressor");
+  CompressorData& c = p.compressor;
+  if (auto v = r.quantity("compress_block_path_limit", Dimension::Length))
+    c.block_path_limit_mm = require_positive(*v, r.key_path("compress_block_path_limit"));
+  if (auto v = r.quantity("compress_velo_tol", Dimension::Velocity))
+    c.velo_tol_mm_s = require_non_negative(*v, r.key_path("compress_velo_tol"));
+  if (auto v = r.quantity("compress_contur_tol", Dimension::Length))
+    c.contur_tol_mm = require_positive(*v, r.key_path("compress_contur_tol"));
+  if (auto v = r.integer("compressor_mode")) {
+    // Units digit 0..3 (tolerance set), tens 0..3 (value assignments), hundreds 0..3 (circles, G0).
+    const long long m = *v;
+    if (m < 0 || m > 333 || m % 10 > 3 || m / 10 % 10 > 3)
+      r.fail("compressor_mode", "must be a MD20482 value: digits 0..3 (units, tens, hundreds)");
+    c.mode = static_cast<int>(m);
+  }
+  if (auto v = r.quantity("crit_spline_angle", Dimension::Angle))
+    c.crit_spline_angle_deg = require_range(*v, 0.0, 89.0, r.key_path("crit_spline_angle"));
+  if (auto v = r.integer("max_blocks_per_span")) {
+    if (*v < 2 || *v > 1000) r.fail("max_blocks_per_span", "must be in [2, 1000]");
+    c.max_blocks_per_span = static_cast<int>(*v);
+  }
+  if (auto v = r.integer("flush_points")) {
+    if (*v < 16 || *v > 1000000) r.fail("flush_points", "must be in [16, 1000000]");
+    c.flush_points = static_cast<int>(*v);
+  }
+  r.reject_unknown_keys();
+}
+
+json compressor_to_json(const MachineProfile& p) {
+  const CompressorData& c = p.compressor;
+  return {{"compress_block_path_limit_mm", c.block_path_limit_mm},
+          {"compress_velo_tol_mm_min", c.velo_tol_mm_s * 60.0},
+          {"compress_contur_tol_mm", c.contur_tol_mm},
+          {"compressor_mode", c.mode},
+          {"crit_spline_angle_deg", c.crit_spline_angle_deg},
+          {"max_blocks_per_span", c.max_blocks_per_span},
+          {"flush_points", c.flush_points}};
+}
+
+}  // namespace drycut::machine

@@ -1,0 +1,75 @@
+// The compressor stage (block_compressor.hpp) on element streams from the real interpreter:
+// which blocks join a run, what breaks it, the order of what passes, the flush window.
+#include <gtest/gtest.h>
+
+#include "interp/block_compressor.hpp"
+#include "interp_test_support.hpp"
+
+namespace drycut::interp {
+namespace {
+
+using testing::CollectingSink;
+
+// Runs NC text through interpreter -> BlockCompressor -> collector.
+std::vector<PathElement> compressed(const std::string& text, const machine::MachineProfile& profile) {
+  auto run = testing::run_program(text, profile);
+  EXPECT_FALSE(run->alarm) << run->alarm->format();
+  CollectingSink out;
+  BlockCompressor stage(out, profile);
+  for (auto& e : run->sink.elements) stage.consume(e);
+  stage.finish();
+  EXPECT_TRUE(out.finished);
+  return out.motions();
+}
+
+std::string x_blocks(int from, int to, const std::string& suffix = "") {
+  std::string t;
+  for (int i = from; i <= to; ++i) t += "G1 X" + std::to_string(i) + suffix + "\n";
+  return t;
+}
+
+TEST(BlockCompressor, SimpleG1BlocksBecomeOneSpanLabelledWithTheCompressor) {
+  const auto m = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + x_blocks(1, 10) + "M30\n", testing::test_profile());
+  ASSERT_EQ(m.size(), 2u);  // the G0, then one span
+  EXPECT_EQ(m[1].kind, ElementKind::SplineSpan);
+  EXPECT_EQ(m[1].label, "COMPCAD");
+  EXPECT_EQ(m[1].compressed_blocks, 10u);
+  EXPECT_EQ(m[1].source.line, 3u);  // its first block
+  EXPECT_NEAR(m[1].curve->length(), 10.0, 1e-9);
+}
+
+TEST(BlockCompressor, CompofAndNonSimpleBlocksPassUnchanged) {
+  const auto p = testing::test_profile();
+  EXPECT_EQ(compressed("G0 X0 Y0 Z0\nG64 F3000\n" + x_blocks(1, 10) + "M30\n", p).size(), 11u);
+  // G91 in a block, an M function alone between blocks, a T word: each ends the run.
+  const auto m = compressed("G0 X0 Y0 Z0\nG64 COMPON F3000\n" + x_blocks(1, 3) + "G91 X1\nG90\n" + x_blocks(5, 7) +
+                                "M8\n" + x_blocks(8, 10) + "M30\n",
+                            p);
+  std::vector<std::string> labels;
+  for (const auto& e : m) labels.push_back(e.label);
+  // G0, span X1..X3, the G91 line, (G90 alone ends the run), span X5..X7, span X8..X10.
+  EXPECT_EQ(labels, (std::vector<std::string>{"G0", "COMPON", "G1", "COMPON", "COMPON"}));
+  for (size_t i = 1; i < m.size(); ++i)
+    EXPECT_LT((m[i].curve->start() - m[i - 1].curve->end()).norm(), 1e-12) << "the path stays connected at " << i;
+}
+
+TEST(BlockCompressor, ALongRunIsFlushedInWindowsAndStaysTangentContinuous) {
+  auto p = testing::test_profile();
+  p.compressor.flush_points = 100;
+  std::string text = "G0 X0 Y0 Z0\nG64 COMPCAD F3000\n";
+  for (int i = 1; i <= 450; ++i) text += "G1 X" + std::to_string(0.1 * i) + " Y" + std::to_string(std::sin(0.01 * i)) + "\n";
+  const auto m = compressed(text + "M30\n", p);
+  uint32_t blocks = 0;
+  for (size_t i = 1; i < m.size(); ++i) {
+    blocks += m[i].compressed_blocks > 0 ? m[i].compressed_blocks : 1;
+    const auto a = m[i - 1].curve->at(m[i - 1].curve->length()).tangent, b = m[i].curve->at(0).tangent;
+    if (i > 1) {
+      EXPECT_LT((a - b).norm(), 1e-6) << "junction " << i;
+    }
+  }
+  EXPECT_EQ(blocks, 450u);
+  EXPECT_GE(m.size(), 1u + 5u);  // at least one span per window of 100 points
+}
+
+}  // namespace
+}  // namespace drycut::interp
