@@ -11,6 +11,11 @@ parser::LoaderOptions make_loader_options(const std::vector<std::string>& search
                                           const machine::MachineProfile& profile) {
   parser::LoaderOptions o;
   o.search_path = search_path_with_cycles(search_path, standard_cycles);
+  // drycut's own definitions (the cycles' plain-text parameter names, CYCLE_MACROS.DEF) come
+  // first, so the user's definition files can redefine every name.
+  if (standard_cycles) {
+    if (const auto folder = standard_cycles_folder()) o.definition_dirs.push_back(*folder);
+  }
   for (const auto& dir : definition_dirs) o.definition_dirs.emplace_back(dir);
   o.max_steps = max_steps;
   o.missing_programs_warn = missing_programs_warn;
