@@ -145,7 +145,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
     position_ = raw_.position;
     if (raw_.too_long) continue;
     decode_line_to_utf8(raw_.bytes, text_);
-    if (!macros_.empty()) expand_macros();
+    if (!macros_.empty() && may_hold_macro()) expand_macros();
     if (is_blank_or_comment(text_)) continue;
     try {
       parser_.parse(text_, parsed_);
@@ -153,7 +153,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
         if (parsed_.def_scope.empty()) parsed_.def_scope = "CHAN";  // a DEF in a GUD file is global
         execute_def();
       } else if (parsed_.statement == Statement::Define) {
-        macros_.insert_or_assign(std::string(parsed_.call_name), std::string(trimmed(parsed_.macro_text)));
+        define_macro(parsed_.call_name, trimmed(parsed_.macro_text));
       } else if (!(parsed_.statement == Statement::Words && parsed_.items.size() == 1 &&
                    parsed_.items[0].kind == ItemKind::M)) {
         warn(990002, "only DEF and DEFINE are read from a definition file", 1);
@@ -163,6 +163,26 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
     }
   }
   frames_.pop_back();
+}
+
+void ProgramLoader::define_macro(std::string_view name, std::string_view text) {
+  macros_.insert_or_assign(std::string(name), std::string(text));
+  if (name.empty()) return;
+  const char c = name.front();
+  macro_initials_[static_cast<unsigned char>(c)] = true;
+  if (c >= 'a' && c <= 'z') macro_initials_[static_cast<unsigned char>(c - 'a' + 'A')] = true;
+  if (c >= 'A' && c <= 'Z') macro_initials_[static_cast<unsigned char>(c - 'A' + 'a')] = true;
+}
+
+bool ProgramLoader::may_hold_macro() const {
+  // Every block passes here once macros exist (drycut's own cycle macros always do), so the
+  // common block without any name that starts like a macro name costs one scan, no copy.
+  for (size_t k = 0; k < text_.size(); ++k) {
+    const char c = text_[k];
+    if (c == ';') return false;
+    if (macro_initials_[static_cast<unsigned char>(c)] && (k == 0 || !is_name_char(text_[k - 1]))) return true;
+  }
+  return false;
 }
 
 void ProgramLoader::expand_macros() {

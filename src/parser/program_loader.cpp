@@ -112,7 +112,7 @@ bool ProgramLoader::read_line(Frame& f) {
     text_.assign(bytes);
   else
     decode_line_to_utf8(bytes, text_);
-  if (!macros_.empty()) expand_macros();
+  if (!macros_.empty() && may_hold_macro()) expand_macros();
   return true;
 }
 
@@ -181,7 +181,7 @@ bool ProgramLoader::execute_line(Block& out) {
       case Statement::Proc: execute_proc(); return false;
       case Statement::Extern: return false;  // a declaration: calls find the program anyway
       case Statement::Define:
-        macros_.insert_or_assign(std::string(parsed_.call_name), std::string(trimmed(parsed_.macro_text)));
+        define_macro(parsed_.call_name, trimmed(parsed_.macro_text));
         return false;
       case Statement::SyncAction:
       case Statement::Interrupt:

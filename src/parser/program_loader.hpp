@@ -127,6 +127,8 @@ class ProgramLoader {
   void initialise(Variable& v, const DefEntry& d);
   void read_definition_files(const std::filesystem::path& main_folder);
   void read_definition_file(const std::filesystem::path& file);
+  void define_macro(std::string_view name, std::string_view text);
+  bool may_hold_macro() const;  // cheap pre-check: a name in text_ starts like a macro name
   void expand_macros();
   // loader_control_flow.cpp
   void execute_control();
@@ -154,6 +156,7 @@ class ProgramLoader {
   bool program_global_data_ = false;  // MD11120 LUD_EXTENDED_SCOPE: main program variables are PUD
   SystemVariables system_variables_;
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
+  std::array<bool, 256> macro_initials_{};  // first letters of the macro names (both cases)
   LoopGuard loop_guard_;
   std::string loop_state_;  // reused buffer
   uint64_t next_loop_check_ = 0;  // steps_ before which a backward jump is not checked (big states)
