@@ -72,6 +72,34 @@ constexpr std::array kCommands{
     CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
     CommandEntry{"ORIPATH", N}, CommandEntry{"ORIPATHS", N}, CommandEntry{"STOPREOF", N},
     CommandEntry{"FA", M},      CommandEntry{"DYNPREC", M},
+    // Contour definitions written into G1/G2/G3 blocks (Fundamentals, "Chamfer, rounding" and
+    // "Contour definitions"): the corner is rounded or chamfered, the end point follows from an
+    // angle. Not modelled yet: the block runs to its programmed corner (a warning names it).
+    CommandEntry{"RND", N},     CommandEntry{"RNDM", N},    CommandEntry{"CHF", N},
+    CommandEntry{"CHR", N},     CommandEntry{"ANG", N},     CommandEntry{"FRC", N},
+    CommandEntry{"FRCM", N},
+    // Smooth approach and retraction parameters, G75/G751 fixed point, tool offsets along the
+    // path, lead/tilt angles, continuous measurement (Fundamentals, Job Planning).
+    CommandEntry{"DISR", N},    CommandEntry{"DISRP", N},   CommandEntry{"FAD", N},
+    CommandEntry{"FP", N},      CommandEntry{"TOFFR", N},   CommandEntry{"LEAD", N},
+    CommandEntry{"TILT", N},    CommandEntry{"MEAW", N},    CommandEntry{"MEAC", N},
+    CommandEntry{"RTLION", N},  CommandEntry{"RTLIOF", N},
+    // Frame commands that align the frame with the tool or rotate by solid angles (Job
+    // Planning, "Frames"): the frame they build is not computed.
+    CommandEntry{"TOFRAME", N}, CommandEntry{"TOFRAMEX", N}, CommandEntry{"TOFRAMEY", N},
+    CommandEntry{"TOFRAMEZ", N}, CommandEntry{"TOROT", N},  CommandEntry{"TOROTX", N},
+    CommandEntry{"TOROTY", N},  CommandEntry{"TOROTZ", N},  CommandEntry{"TOROTOF", N},
+    CommandEntry{"PAROT", N},   CommandEntry{"PAROTOF", N}, CommandEntry{"ROTS", N},
+    CommandEntry{"AROTS", N},   CommandEntry{"CROTS", N},
+    // Predefined procedures of tool management, synchronized actions, files and axis dynamics
+    // (Job Planning; Function Manual Tool Management): valid calls, no path of their own.
+    CommandEntry{"SETPIECE", N}, CommandEntry{"GETACTT", N}, CommandEntry{"NEWT", N},
+    CommandEntry{"DELT", N},    CommandEntry{"GETSELT", N}, CommandEntry{"GETEXET", N},
+    CommandEntry{"TCA", N},     CommandEntry{"POSM", N},    CommandEntry{"RESETMON", N},
+    CommandEntry{"SETMTH", N},  CommandEntry{"CANCEL", N},  CommandEntry{"LOCK", N},
+    CommandEntry{"UNLOCK", N},  CommandEntry{"RESET", N},   CommandEntry{"NEWCONF", N},
+    CommandEntry{"WRITE", N},   CommandEntry{"READ", N},    CommandEntry{"DELETE", N},
+    CommandEntry{"JERKA", N},
     // Valid, and modelled by doing nothing: they change display, single-block or buffer
     // behaviour, nothing a dry run measures.
     CommandEntry{"SBLOF", E},   CommandEntry{"SBLON", E},   CommandEntry{"DISPLOF", E},

@@ -39,6 +39,7 @@ constexpr std::array kFunctions{
     FunctionInfo{"AXNAME", F::AxName, 1, 1, "the axis a string names"},
     FunctionInfo{"AXSTRING", F::AxString, 1, 1, "the name of an axis as a string"},
     FunctionInfo{"ISVAR", F::IsVar, 1, 1, "TRUE when the string names a known variable"},
+    FunctionInfo{"ISFILE", F::IsFile, 1, 1, "TRUE when a program file of that name is in drycut's folders"},
     FunctionInfo{"GETT", F::GetT, 1, 2, "GETT(name[, duplo]): T number of a named tool"},
     FunctionInfo{"CTRANS", F::FrameFunction, 0, 30, "frame with translations"},
     FunctionInfo{"CROT", F::FrameFunction, 0, 30, "frame with rotations"},

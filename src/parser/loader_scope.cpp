@@ -6,6 +6,7 @@
 
 #include "parser/line_error.hpp"
 #include "parser/loader_frame.hpp"
+#include "parser/program_files.hpp"
 
 namespace drycut::parser {
 
@@ -101,6 +102,12 @@ Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span
                          (!name.empty() && name[0] == '$' && l.system_variables_.is_known(name)) ||
                          (name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1)));
       return Value(known ? 1.0 : 0.0);
+    }
+    case Function::IsFile: {
+      // Job Planning, "File functions": TRUE when the file exists in the NCK's file system.
+      // drycut's file system is its folders (main program, search path, standard cycles).
+      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "ISFILE needs a file name as a string");
+      return Value(l.files_->find(normalize_program_name(args[0].text)) ? 1.0 : 0.0);
     }
     case Function::GetT: {
       if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");

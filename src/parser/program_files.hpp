@@ -11,7 +11,8 @@
 
 namespace drycut::parser {
 
-// "_N_SUB_SPF", "sub.spf", "SUB" -> name "SUB", extension "SPF" / "" (none given).
+// "_N_SUB_SPF", "sub.spf", "SUB", "/_N_SPF_DIR/_N_SUB_SPF" -> name "SUB", extension "SPF" / ""
+// (none given); a directory in front is dropped.
 struct ProgramName {
   std::string name;       // upper case
   std::string extension;  // "SPF", "MPF" or empty

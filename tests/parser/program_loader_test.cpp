@@ -83,7 +83,7 @@ TEST_F(Loader, CommandsToolNamesAndArguments) {
 }
 
 TEST_F(Loader, NotModelledCommandWarnsAndIsDropped) {
-  const auto b = run("G1 X1 F100 TRAORI\nWORKPIECE(,,,\"BOX\",0,0,-50)\nM30\n");
+  const auto b = run("G1 X1 F100 TRAORI\nSETPIECE(1)\nM30\n");
   ASSERT_EQ(b.size(), 2u);
   EXPECT_TRUE(b[0].commands.empty());
   ASSERT_EQ(diagnostics_.items().size(), 2u);
