@@ -127,10 +127,14 @@ void LineParser::parse_jump_target(ParsedLine& out, JumpTarget& target) {
 
 namespace {
 
-// Attributes of GUD definitions (unit, limits, access rights): DEF CHAN REAL PHU 42 LLI 0 X.
+// Attributes of GUD definitions (Job Planning, "Definition of user data"): preprocessing stop
+// (SYNR, SYNW, SYNRW), initialisation time (INIPO, INIRE, INICF), unit, limits and access rights
+// (PHU, LLI, ULI, APR..., with a value), before or after the type:
+// DEF NCK SYNR INIPO REAL PHU 1 LLI 0 ULI 1000 SPEEDLIM. None changes what drycut computes.
 bool is_definition_attribute(std::string_view w) {
   return w == "PHU" || w == "LLI" || w == "ULI" || w == "PRLOC" || w == "APR" || w == "APW" ||
-         w == "APRP" || w == "APWP" || w == "APRB" || w == "APWB" || w == "SYNR" || w == "SYNW" || w == "SYNRW";
+         w == "APRP" || w == "APWP" || w == "APRB" || w == "APWB" || w == "SYNR" || w == "SYNW" ||
+         w == "SYNRW" || w == "INIPO" || w == "INIRE" || w == "INICF";
 }
 
 }  // namespace
@@ -192,18 +196,23 @@ void LineParser::parse_initialiser(ParsedLine& out, DefEntry& e) {
   out.pool.args.insert(out.pool.args.end(), values.begin(), values.end());
 }
 
+void LineParser::skip_definition_attributes(ParsedLine& out) {
+  while (peek().kind == TokenKind::Name && is_definition_attribute(peek().text)) {
+    ++pos_;
+    if (peek().kind != TokenKind::End && peek().kind != TokenKind::Name) expression(out);
+  }
+}
+
 void LineParser::parse_def(ParsedLine& out) {
   if (peek().kind == TokenKind::Name && (peek().text == "NCK" || peek().text == "CHAN")) {
     out.def_scope = peek().text;
     ++pos_;
   }
   DefEntry proto;
+  skip_definition_attributes(out);
   parse_type(proto);
   out.def_type = proto.type;
-  while (peek().kind == TokenKind::Name && is_definition_attribute(peek().text)) {
-    ++pos_;
-    if (peek().kind != TokenKind::End && peek().kind != TokenKind::Name) expression(out);
-  }
+  skip_definition_attributes(out);
   for (;;) {
     const Token& name = peek();
     if (name.kind != TokenKind::Name || is_expression_keyword(name.text))

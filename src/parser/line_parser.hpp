@@ -26,6 +26,7 @@ class LineParser {
   void parse_dimensions(ParsedLine& out, DefEntry& e);
   void parse_initialiser(ParsedLine& out, DefEntry& e);
   void parse_def(ParsedLine& out);
+  void skip_definition_attributes(ParsedLine& out);
   void parse_proc(ParsedLine& out);
   bool parse_case(ParsedLine& out);
   bool parse_repeat_section(ParsedLine& out, bool one_block);
