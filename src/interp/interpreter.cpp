@@ -302,8 +302,23 @@ double Interpreter::feed_unit() const {
 }
 
 double Interpreter::spindle_speed(const BlockContext& ctx) {
-  if (state_.spindle == SpindleState::Stopped) return 0.0;
-  if (!state_.constant_cutting_speed) return state_.spindle_rpm;
+  // G331/G332 tap with the spindle in position control (SPOS before, no M3/M4): the speed is
+  // the S programmed, the direction the sign of the lead (Fundamentals, "Tapping without
+  // compensating chuck (G331, G332)").
+  const bool tapping = state_.motion == MotionMode::Tapping || state_.motion == MotionMode::TappingRetract;
+  if (state_.spindle == SpindleState::Stopped && !tapping) return 0.0;
+  if (!state_.constant_cutting_speed || tapping) {
+    // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point).
+    if (state_.spindle_rpm > profile_.max_spindle_speed_rpm) {
+      const std::string what = "S" + std::to_string(static_cast<long>(state_.spindle_rpm)) +
+                               " above the spindle's maximum (MD35100): limited to " +
+                               std::to_string(static_cast<long>(profile_.max_spindle_speed_rpm)) + " rpm";
+      if (warned_.insert(what).second)
+        diagnostics_.warn(kValueLimited, what, {ctx.file_name(), ctx.block.line, 0}, ctx.block.text);
+      return profile_.max_spindle_speed_rpm;
+    }
+    return state_.spindle_rpm;
+  }
   // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
   // the diameter 2|X| (work coordinates) at the block start, limited by LIMS and MD35100.
   warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);

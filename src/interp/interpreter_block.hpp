@@ -23,6 +23,7 @@ inline constexpr double kMaxTurns = 999;           // TURN=0..999
 inline constexpr double kMaxToolNumber = 32000;    // T number
 inline constexpr double kMaxEdgeNumber = 32000;    // D number
 inline constexpr int kUnsupported = 990006;  // catalogued: function not modelled, would change the path
+inline constexpr int kValueLimited = 990013;  // catalogued warning: a value clipped to a machine limit
 inline constexpr int kNotModelled = 990002;  // catalogued warning: no effect on the path modelled
 // Largest value of a geometry address (9 digits before the decimal point, PGA Fundamentals
 // "Address format"): beyond it a radius or knot span is no number the control takes.

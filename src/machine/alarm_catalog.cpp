@@ -63,6 +63,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990007, S::Warning, "Value not known to drycut; the documented default is used", A::Drycut},
     AlarmInfo{990010, S::Alarm, "Program contains no blocks", A::Drycut},
     AlarmInfo{990012, S::Warning, "Tool or cutting edge not in the tool table", A::Drycut},
+    AlarmInfo{990013, S::Warning, "Programmed value limited by the machine data", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };
 
