@@ -308,8 +308,10 @@ double Interpreter::spindle_speed(const BlockContext& ctx) {
   const bool tapping = state_.motion == MotionMode::Tapping || state_.motion == MotionMode::TappingRetract;
   if (state_.spindle == SpindleState::Stopped && !tapping) return 0.0;
   if (!state_.constant_cutting_speed || tapping) {
-    // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point).
+    // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point);
+    // the warning only where the speed times the path (G95, threads, tapping).
     if (state_.spindle_rpm > profile_.max_spindle_speed_rpm) {
+      if (state_.feed_mode != FeedMode::PerRevolution && !state_.thread_mode()) return profile_.max_spindle_speed_rpm;
       const std::string what = "S" + std::to_string(static_cast<long>(state_.spindle_rpm)) +
                                " above the spindle's maximum (MD35100): limited to " +
                                std::to_string(static_cast<long>(profile_.max_spindle_speed_rpm)) + " rpm";
