@@ -47,7 +47,7 @@ constexpr std::array kCommands{
     CommandEntry{"SOFTA", N},   CommandEntry{"BRISKA", N},  
     CommandEntry{"WORKPIECE", E}, CommandEntry{"MCALL", M},
     CommandEntry{"DISCL", N},
-    CommandEntry{"EXTCALL", N}, CommandEntry{"PCALL", N},
+    CommandEntry{"EXTCALL", M}, CommandEntry{"PCALL", M},
     CommandEntry{"POS", M},     CommandEntry{"POSA", M},    CommandEntry{"SPOSA", M},
     CommandEntry{"WAITP", M},   CommandEntry{"WAITS", M},   CommandEntry{"LIMS", N},
     CommandEntry{"PRESETON", N}, CommandEntry{"CPROT", N},  CommandEntry{"ORIRESET", N},

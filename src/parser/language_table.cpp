@@ -62,7 +62,7 @@ constexpr std::array kStatements{
     Row{"ID=n WHEN/WHENEVER/FROM/EVERY ... DO ...", N, "synchronized actions: accepted, not simulated"},
     Row{"SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", N, "interrupt routines: accepted, never triggered in a dry run"},
     Row{"MCALL name(args) / MCALL", M, "modal call after every block with axis motion (not inside the called program); MCALL alone ends it"},
-    Row{"PCALL / EXTCALL", N, "external calls: accepted with a warning"},
+    Row{"PCALL / EXTCALL", M, "calls with a path / from external memory: run as CALL from drycut's folders (the path is dropped)"},
 };
 
 constexpr std::array kOperators{

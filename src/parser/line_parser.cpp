@@ -428,6 +428,37 @@ bool LineParser::parse_statement(ParsedLine& out) {
     parse_proc(out);
     return true;
   }
+  // EXTCALL runs a program from an external memory (Function Manual K1, "Executing from external
+  // source": EXTCALL("<path/><name>")); drycut's folders are that memory, so it is a CALL. The
+  // form without parentheses that shop programs use is taken too.
+  if (w == "EXTCALL") {
+    out.statement = Statement::Call;
+    ++pos_;
+    const bool paren = peek().kind == TokenKind::LParen;
+    if (paren) ++pos_;
+    if (peek().kind != TokenKind::String && peek().kind != TokenKind::Name)
+      throw LineError(12080, peek().column, "program name expected after EXTCALL");
+    out.call_name = peek().text;
+    out.target.column = peek().column;
+    ++pos_;
+    if (paren) {
+      if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "')' expected after the EXTCALL name");
+      ++pos_;
+    }
+    expect_end();
+    return true;
+  }
+  // PCALL <path/>NAME(args): a subprogram call with an absolute path (Job Planning, "Subprogram
+  // call with path specification and parameters (PCALL)"). The path names the control's
+  // directory, which drycut's folders stand for: the words go on from NAME as an ordinary call.
+  if (w == "PCALL") {
+    ++pos_;
+    while (peek().kind == TokenKind::Slash && peek(1).kind == TokenKind::Name &&
+           peek(2).kind == TokenKind::Slash)
+      pos_ += 2;
+    if (peek().kind == TokenKind::Slash && peek(1).kind == TokenKind::Name) ++pos_;
+    return false;
+  }
   if (w == "CALL") {
     out.statement = Statement::Call;
     ++pos_;

@@ -17,7 +17,7 @@ ProgramName normalize_program_name(std::string_view written) {
   ProgramName p;
   // A path as the control writes it ("/_N_SPF_DIR/_N_SUB_SPF", "/_N_WKS_DIR/_N_PART_WPD/..."):
   // drycut's folders take the place of the control's directories, so only the name counts.
-  if (const size_t slash = written.find_last_of('/'); slash != std::string_view::npos)
+  if (const size_t slash = written.find_last_of("/\\"); slash != std::string_view::npos)
     written = written.substr(slash + 1);
   std::string s = upper_ascii(written);
   if (ends_with(s, ".SPF") || ends_with(s, ".MPF")) {
