@@ -205,6 +205,15 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       if (ctx.dwell) continue;  // G4 S<rev>
       if (a.value < 0) raise(ctx, 12160, "S must not be negative", a.column);
       state_.spindle_rpm = a.value;
+    } else if (const int spindle = numbered_spindle(n); spindle > 0) {
+      // S<n>=: the speed of spindle n (Fundamentals, "Spindle speed S"): the master's is S.
+      if (spindle != profile_.master_spindle) {
+        warn_once(ctx, "spindle " + std::to_string(spindle) + " (only the master spindle is simulated)", a.column);
+        continue;
+      }
+      if (ctx.dwell) continue;
+      if (a.value < 0) raise(ctx, 12160, std::string(n) + " must not be negative", a.column);
+      state_.spindle_rpm = a.value;
     } else if (n == "LIMS") {
       if (a.value < 0) raise(ctx, 12160, "LIMS must not be negative", a.column);
       state_.spindle_speed_limit = a.value;
@@ -244,6 +253,16 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   }
 }
 
+int Interpreter::numbered_spindle(std::string_view name) {
+  if (name.size() < 2 || name[0] != 'S') return 0;
+  int n = 0;
+  for (size_t i = 1; i < name.size(); ++i) {
+    if (name[i] < '0' || name[i] > '9' || n > 99) return 0;
+    n = n * 10 + (name[i] - '0');
+  }
+  return n;
+}
+
 void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_t column) {
   std::vector<ToolNotice> notices;
   if (tools_.program_tool(id, notices)) ctx.tool_change = true;  // MD22550 = 0: T changes
@@ -252,8 +271,12 @@ void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_
 
 void Interpreter::apply_m_words(BlockContext& ctx) {
   for (const auto& m : ctx.block.m) {
-    if (m.extension > 0 && m.code >= 3 && m.code <= 5) {
+    // M<n>=3/4/5/19/70: spindle n. The master spindle (MD20090) is the one drycut simulates;
+    // another spindle's functions are warned and leave the master's state alone.
+    const bool spindle_function = (m.code >= 3 && m.code <= 5) || m.code == 19 || m.code == 70;
+    if (m.extension > 0 && m.extension != profile_.master_spindle && spindle_function) {
       warn_once(ctx, "spindle " + std::to_string(m.extension) + " (only the master spindle is simulated)", m.column);
+      continue;
     }
     switch (m.code) {
       case 0: ctx.stop = StopKind::ProgramStop; break;

@@ -134,6 +134,8 @@ class Interpreter {
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
                           uint32_t column = 0) const;
   void warn_once(const BlockContext& ctx, const std::string& what, uint32_t column);
+  // "S2" -> 2 (the spindle of a numbered speed address S<n>=), 0 for any other name.
+  static int numbered_spindle(std::string_view name);
 
   const machine::MachineProfile& profile_;
   ElementSink& sink_;

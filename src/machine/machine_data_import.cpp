@@ -436,6 +436,7 @@ class Importer {
   // The master spindle's speed limit and accelerations (gear stage 1 where the datum has stages).
   void read_spindle() {
     MachineProfile& p = out_.profile;
+    p.master_spindle = master_spindle_;
     int m = 0;
     for (int axis : spindle_axes_)
       if (number_of("$MA_SPIND_ASSIGN_TO_MACHAX[#" + std::to_string(axis) + "]") == master_spindle_) m = axis;

@@ -46,6 +46,10 @@ void read_path(const json& node, MachineProfile& p) {
     p.tool_change_time_s = require_non_negative(*v, r.key_path("tool_change_time"));
   if (auto v = r.quantity("spindle_ramp_time", Dimension::Time))
     p.spindle_ramp_time_s = require_non_negative(*v, r.key_path("spindle_ramp_time"));
+  if (auto v = r.integer("master_spindle")) {
+    if (*v < 1 || *v > 99) r.fail("master_spindle", "must be in [1, 99]");
+    p.master_spindle = static_cast<int>(*v);
+  }
   if (auto v = r.number("max_spindle_speed_rpm"))
     p.max_spindle_speed_rpm = require_positive(*v, r.key_path("max_spindle_speed_rpm"));
   if (auto v = r.number("spindle_posctrl_velo_rpm"))
@@ -279,6 +283,7 @@ std::string profile_to_json(const MachineProfile& p) {
                   {"tool_change_time_s", p.tool_change_time_s},
                   {"spindle_ramp_time_s", p.spindle_ramp_time_s},
                   {"max_spindle_speed_rpm", p.max_spindle_speed_rpm},
+                  {"master_spindle", p.master_spindle},
                   {"spindle_posctrl_velo_rpm", p.spindle_posctrl_velo_rpm},
                   {"spindle_posctrl_accel_rev_s2", p.spindle_posctrl_accel_rev_s2},
                   {"spindle_speedctrl_accel_rev_s2", p.spindle_speedctrl_accel_rev_s2}};

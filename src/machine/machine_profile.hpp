@@ -80,6 +80,7 @@ struct MachineProfile {
   double tool_change_time_s = 0;                // M6 duration (not derivable from the program)
   double spindle_ramp_time_s = 0;               // spindle run-up/reversal before a thread or tapping block
   double max_spindle_speed_rpm = 10000;         // MD35100 SPIND_VELO_LIMIT (G96 at the centre)
+  int master_spindle = 1;                       // MD20090 SPIND_DEF_MASTER_SPIND (S1=, M1=3 address it)
   double spindle_posctrl_velo_rpm = 500;        // MD35300 SPIND_POSCTRL_VELO (SPOS)
   double spindle_posctrl_accel_rev_s2 = 30;     // MD35210 GEAR_STEP_POSCTRL_ACCEL (SPOS)
   double spindle_speedctrl_accel_rev_s2 = 30;   // MD35200 GEAR_STEP_SPEEDCTRL_ACCEL (braking before SPOS)

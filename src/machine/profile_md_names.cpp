@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 55> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -34,6 +34,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 54> kNames{{
     {"tool_change_time", "- (machine specific)"},
     {"spindle_ramp_time", "- (from MD35200/35210)"},
     {"max_spindle_speed_rpm", "MD35100 SPIND_VELO_LIMIT"},
+    {"master_spindle", "MD20090 SPIND_DEF_MASTER_SPIND"},
     {"spindle_posctrl_velo_rpm", "MD35300 SPIND_POSCTRL_VELO"},
     {"spindle_posctrl_accel_rev_s2", "MD35210 GEAR_STEP_POSCTRL_ACCEL"},
     {"spindle_speedctrl_accel_rev_s2", "MD35200 GEAR_STEP_SPEEDCTRL_ACCEL"},
