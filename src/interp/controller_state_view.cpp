@@ -84,6 +84,14 @@ std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<
   return 0.0;
 }
 
+int InterpreterStateView::settable_frame_number(const std::string& work_offset) {
+  if (work_offset.size() < 2 || work_offset[0] != 'G') return 0;
+  const int g = std::atoi(work_offset.c_str() + 1);
+  if (g >= 54 && g <= 57) return g - 53;
+  if (g >= 505 && g <= 599) return g - 500;
+  return 0;  // G500 (and G53/G153, which suppress without selecting)
+}
+
 std::optional<Value> InterpreterStateView::read_system_variable(std::string_view n, std::span<const Value> indices) const {
   const ModalState& s = interpreter_.state();
   auto number = [](std::optional<double> v) { return v ? std::optional<Value>(Value(*v)) : std::nullopt; };
@@ -107,6 +115,12 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
     return Value(-1.0);
   }
   if (n == "$AC_TIME" || n == "$AC_PATHN") return Value(0.0);
+  // The number of the active settable frame (Job Planning, "$P_UIFRNUM"): G500 0, G54..G57 1..4,
+  // G505..G599 5..99.
+  if (n == "$P_UIFRNUM") return Value(static_cast<double>(settable_frame_number(s.work_offset)));
+  // A measuring input (MEAS/MEAW) is taken as having switched: a dry run has no part to touch,
+  // and a probing macro checks the flag before it goes on (the control would stop it otherwise).
+  if (n == "$AC_MEA") return Value(1.0);
   return std::nullopt;
 }
 

@@ -25,6 +25,7 @@ class InterpreterStateView : public parser::ControllerStateView {
   std::optional<double> g_group_index(int group) const;
   std::optional<double> axis_position(std::span<const parser::Value> indices) const;
   std::optional<double> tool_datum(int parameter, std::span<const parser::Value> indices) const;
+  static int settable_frame_number(const std::string& work_offset);  // G54 -> 1 ...
 
   const Interpreter& interpreter_;
   const machine::MachineProfile& profile_;

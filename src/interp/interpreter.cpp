@@ -159,6 +159,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       }
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
+    } else if (n == "RET") {
+      // The return itself is the loader's (it leaves the subprogram after this block).
     } else if (n == "TCOABS" || n == "TCOFR") {
       orient_tool(ctx, n, c.column);
     } else if (apply_axis_command(ctx, c)) {
