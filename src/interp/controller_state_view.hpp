@@ -20,6 +20,7 @@ class InterpreterStateView : public parser::ControllerStateView {
       : interpreter_(interpreter), profile_(profile) {}
   std::optional<parser::Value> read_system_variable(std::string_view upper_name,
                                                     std::span<const parser::Value> indices) const override;
+  double elapsed_s() const override { return interpreter_.nominal_time_s(); }
 
  private:
   std::optional<double> g_group_index(int group) const;

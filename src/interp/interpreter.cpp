@@ -402,11 +402,28 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
 }
 
 void Interpreter::emit(PathElement element) {
+  add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;
     has_last_tangent_ = true;
   }
   sink_.consume(std::move(element));
+}
+
+void Interpreter::add_nominal_time(const PathElement& e) {
+  // A lower bound of the planned time (no ramps, no corners): enough for timers a program reads
+  // while the planner is still behind the interpreter.
+  if (e.kind == ElementKind::Dwell) {
+    nominal_time_s_ += e.dwell_s;
+    return;
+  }
+  if (!e.is_motion() || !e.curve) return;
+  double v = e.feed_mm_s;
+  if (e.rapid) {
+    v = 0;
+    for (const auto& axis : profile_.axes) v = v > 0 ? std::min(v, axis.max_velocity_mm_s) : axis.max_velocity_mm_s;
+  }
+  if (v > 0) nominal_time_s_ += e.curve->length() / v;
 }
 
 void Interpreter::emit_control(BlockContext& ctx, ElementKind kind, std::string label) {

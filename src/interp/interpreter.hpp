@@ -57,6 +57,7 @@ class Interpreter {
   const ToolState& tools() const { return tools_; }
   ToolState& tools() { return tools_; }
   bool ended() const { return ended_; }
+  double nominal_time_s() const { return nominal_time_s_; }  // lower bound of the time so far
   // Channel axes beyond X, Y, Z ($AA_IM[A] reads their positions).
   const ExtraAxes& extra_axes() const { return extra_axes_; }
 
@@ -99,6 +100,7 @@ class Interpreter {
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);
+  void add_nominal_time(const PathElement& element);
   // Marks a G1 element for the compressor stage (docs/compressor.md) and warns once about
   // compressor settings drycut does not model.
   void mark_for_compressor(const BlockContext& ctx, PathElement& element);
@@ -156,6 +158,7 @@ class Interpreter {
   SplineBlockQuota quota_;
   DynamicsMode last_dynamics_;
   bool ended_ = false;
+  double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;

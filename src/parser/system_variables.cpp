@@ -53,6 +53,14 @@ std::string system_variable_key(std::string_view upper_name, std::span<const Val
 
 SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::span<const Value> indices) const {
   const std::string key = system_variable_key(name, indices);
+  if (name == "$AC_TIMER") {
+    // Job Planning, "Timer variable $AC_TIMER[n]": counts seconds from the value written (>= 0)
+    // until -1 stops it. Time is the interpreter's (elapsed_s), so a timed warm-up loop ends.
+    if (auto it = timer_start_.find(key); it != timer_start_.end())
+      return {Value((view_ ? view_->elapsed_s() : 0.0) - it->second), false};
+    if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
+    return {Value(0.0), false};
+  }
   if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
   if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
   if (auto it = values_.find(key); it != values_.end()) return {Value(it->second), false};
@@ -69,6 +77,17 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
 
 void SystemVariables::write(std::string_view name, std::span<const Value> indices, const Value& v) {
   std::string key = system_variable_key(name, indices);
+  if (name == "$AC_TIMER" && v.is_number()) {
+    const double now = view_ ? view_->elapsed_s() : 0.0;
+    if (v.number >= 0) {
+      timer_start_[key] = now - v.number;
+      written_.erase(key);
+    } else if (auto it = timer_start_.find(key); it != timer_start_.end()) {
+      written_[key] = now - it->second;  // stopped: it keeps the time it reached
+      timer_start_.erase(it);
+    }
+    return;
+  }
   if (v.is_number()) {
     texts_.erase(key);
     written_[std::move(key)] = v.number;
@@ -79,6 +98,12 @@ void SystemVariables::write(std::string_view name, std::span<const Value> indice
 }
 
 void SystemVariables::append_state(std::string& out) const {
+  // A running timer is part of the state: a loop that waits for it is not endless.
+  for (const auto& [k, start] : timer_start_) {
+    const double reading = (view_ ? view_->elapsed_s() : 0.0) - start;
+    out += k;
+    out.append(reinterpret_cast<const char*>(&reading), sizeof reading);
+  }
   for (const auto& [k, v] : written_) {
     out += k;
     out.append(reinterpret_cast<const char*>(&v), sizeof v);

@@ -38,6 +38,8 @@ class ControllerStateView {
  public:
   virtual ~ControllerStateView() = default;
   virtual std::optional<Value> read_system_variable(std::string_view upper_name, std::span<const Value> indices) const = 0;
+  // Seconds the program has run so far, as far as the interpreter knows (timers $AC_TIMER).
+  virtual double elapsed_s() const { return 0.0; }
 };
 
 using MachineDataMap = std::map<std::string, double, std::less<>>;
@@ -62,6 +64,7 @@ class SystemVariables {
  private:
   MachineDataMap values_;                                   // machine data, I/O (from the profile)
   MachineDataMap written_;                                  // numbers written by the program
+  MachineDataMap timer_start_;  // running $AC_TIMER[n]: the elapsed time at which it read 0
   std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
   const ControllerStateView* view_ = nullptr;
   mutable uint64_t view_reads_ = 0;
