@@ -111,6 +111,11 @@ std::string sprint(std::span<const Value> args, uint32_t column) {
       continue;
     }
     ++i;
+    // %<width>.<decimals>F: a field width pads on the left with blanks (Job Planning, SPRINT).
+    size_t width = 0;
+    while (i < format.size() && format[i] >= '0' && format[i] <= '9') width = std::min<size_t>(width * 10 + static_cast<size_t>(format[i++] - '0'), 200);
+    if (i >= format.size()) break;
+    const size_t field_start = out.size();
     int decimals = 6;
     if (format[i] == '.') {  // %.3F
       decimals = 0;
@@ -132,6 +137,7 @@ std::string sprint(std::span<const Value> args, uint32_t column) {
         if (format[i] == '%') out += '%';
         else throw LineError(12150, column, std::string("SPRINT: unknown format %") + format[i]);
     }
+    if (const size_t written = out.size() - field_start; written < width) out.insert(field_start, width - written, ' ');
   }
   return out;
 }
