@@ -107,6 +107,7 @@ void LineParser::parse_jump_target(ParsedLine& out) { parse_jump_target(out, out
 void LineParser::parse_jump_target(ParsedLine& out, JumpTarget& target) {
   const Token& t = peek();
   target.column = t.column;
+  if (out.jump == JumpDirection::ToStart) return;  // GOTOS takes no target
   int64_t number = 0;
   const TokenKind after = peek(1).kind;
   const bool computed = after == TokenKind::Concat || after == TokenKind::Plus || after == TokenKind::LBracket;
@@ -317,6 +318,7 @@ bool LineParser::jump_direction(std::string_view word, JumpDirection& d) {
   else if (word == "GOTOB") d = JumpDirection::Backward;
   else if (word == "GOTO") d = JumpDirection::ForwardThenBackward;
   else if (word == "GOTOC") d = JumpDirection::NoAlarm;
+  else if (word == "GOTOS") d = JumpDirection::ToStart;
   else return false;
   return true;
 }

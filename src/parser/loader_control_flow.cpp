@@ -174,6 +174,10 @@ Statement ProgramLoader::skip_forward(bool stop_at_else) {
 }
 
 void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
+  if (direction == JumpDirection::ToStart) {
+    jump_to_start();
+    return;
+  }
   if (target.expr != kNoExpr) {
     // A computed target: a string is a label, a number a block number.
     const Value v = eval_value(target.expr);
@@ -192,6 +196,28 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
     }
   }
   jump_to(direction, std::string(target.label), target.number, target.column);
+}
+
+void ProgramLoader::jump_to_start() {
+  // GOTOS (Job Planning, "Program jumps: GOTOS"): back to the beginning of the program, that is
+  // its first block after the PROC line, definitions and declarations (those ran once).
+  Frame& f = *frames_.back();
+  f.reader.seek(LinePosition{});
+  LinePosition first{};
+  while (f.reader.next(raw_)) {
+    position_ = raw_.position;
+    if (raw_.too_long) continue;
+    decode_line_to_utf8(raw_.bytes, text_);
+    if (is_blank_or_comment(text_)) continue;
+    parse_during_search(f);
+    const Statement s = parsed_.statement;
+    if (s == Statement::Def || s == Statement::Proc || s == Statement::Extern || s == Statement::Define) continue;
+    first = position_;
+    break;
+  }
+  f.control.clear();
+  f.reader.seek(first);
+  check_endless_loop();
 }
 
 void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number,

@@ -36,7 +36,8 @@ enum class Statement : uint8_t {
   Interrupt,   // SETINT/ENABLE/DISABLE/CLRINT: accepted, not modelled
 };
 
-enum class JumpDirection : uint8_t { Forward, Backward, ForwardThenBackward, NoAlarm };
+// ToStart: GOTOS, back to the first executable block of the program (no target).
+enum class JumpDirection : uint8_t { Forward, Backward, ForwardThenBackward, NoAlarm, ToStart };
 
 // A block number from a numeric value: beyond the int64 range (or NaN) it saturates, as a
 // written N word with too many digits does (no such block exists: 14080, or nothing for GOTOC).
