@@ -154,6 +154,10 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     if (axis_word(item)) return;
+    if (item.name == "M" && item.index_count == 0) {  // M=QU(8), M=R10: the M function of the value
+      add_m(item, 0, item.expr, 0);
+      return;
+    }
     if (!is_address(item.name)) {
       // OVR=50, CTOL=0.01: valid settings drycut does not model.
       const Support s = command_support(item.name);

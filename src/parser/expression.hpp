@@ -29,7 +29,7 @@ enum class ExprOp : uint8_t {
 // function_table.cpp (the one table of functions).
 enum class Function : uint8_t {
   Sin, Cos, Tan, Asin, Acos, Atan2, Sqrt, Abs, Pot, Trunc, Round, RoundUp, Ln, Exp, Min, Max,
-  Bound,
+  Bound, QuickOutput, IsAxis,
   // Strings
   StrLen, Index, RIndex, MIndex, SubStr, ToUpper, ToLower, Number, IsNumber, Sprint, AxName,
   AxString,

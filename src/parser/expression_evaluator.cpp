@@ -201,6 +201,8 @@ class Evaluator {
       case Function::Exp: return checked(std::exp(x), n.column);
       case Function::Min: return std::fmin(x, arg(n, 1));
       case Function::Max: return std::fmax(x, arg(n, 1));
+      case Function::QuickOutput: return x;  // M=QU(8): M8, output without waiting (same path)
+      case Function::IsAxis: return x >= 1 && x <= 3 ? 1.0 : 0.0;  // geometry axes 1..3 exist
       case Function::Bound: {  // BOUND(min, max, value)
         const double hi = arg(n, 1), v = arg(n, 2);
         if (x > hi) arithmetic_error(n.column, "BOUND: minimum greater than maximum");

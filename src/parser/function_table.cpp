@@ -26,6 +26,8 @@ constexpr std::array kFunctions{
     FunctionInfo{"MINVAL", F::Min, 2, 2, "smaller of two values"},
     FunctionInfo{"MAXVAL", F::Max, 2, 2, "larger of two values"},
     FunctionInfo{"BOUND", F::Bound, 3, 3, "BOUND(min, max, x): x limited to [min, max]"},
+    FunctionInfo{"QU", F::QuickOutput, 1, 1, "M=QU(8): quick output of an auxiliary function (its value)"},
+    FunctionInfo{"ISAXIS", F::IsAxis, 1, 1, "TRUE when geometry axis 1..3 exists"},
     FunctionInfo{"STRLEN", F::StrLen, 1, 1, "length of a string"},
     FunctionInfo{"INDEX", F::Index, 2, 2, "first position (from 0) of a character in a string, -1 if none"},
     FunctionInfo{"RINDEX", F::RIndex, 2, 2, "last position of a character in a string, -1 if none"},
