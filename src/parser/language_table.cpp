@@ -57,6 +57,7 @@ constexpr std::array kStatements{
     Row{"IF cond GOTOx target", M, "conditional jump"},
     Row{"CASE expr OF c GOTOx l ... DEFAULT GOTOx l", M, "multi-way jump"},
     Row{"REPEAT start [end] P=n / REPEATB label P=n", M, "program section repetition"},
+    Row{"CALL BLOCK start TO end", M, "the program section between the labels runs once (as REPEAT start end)"},
     Row{"SETAL(n[, text])", M, "cycle/user alarm: 60000-61999 and 63000-69999 stop the program, 62000-62999 only display (warning)"},
     Row{"MSG(text)", M, "message (composed with <<)"},
     Row{"STOPRE", M, "preprocessing stop"},

@@ -461,6 +461,25 @@ bool LineParser::parse_statement(ParsedLine& out) {
     if (peek().kind == TokenKind::Slash && peek(1).kind == TokenKind::Name) ++pos_;
     return false;
   }
+  // CALL BLOCK <start label> TO <end label>: the program section between the labels runs once,
+  // as REPEAT <start> <end> (Job Planning, "Program section repetition", indirect CALL BLOCK).
+  if (w == "CALL" && peek(1).kind == TokenKind::Name && peek(1).text == "BLOCK") {
+    out.statement = Statement::RepeatSection;
+    out.repeat_one_block = false;
+    pos_ += 2;
+    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after CALL BLOCK");
+    out.call_name = peek().text;
+    out.target.column = peek().column;
+    ++pos_;
+    if (!(peek().kind == TokenKind::Name && peek().text == "TO"))
+      throw LineError(12080, peek().column, "TO expected in CALL BLOCK");
+    ++pos_;
+    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "end label expected after TO");
+    out.end_label = peek().text;
+    ++pos_;
+    expect_end();
+    return true;
+  }
   if (w == "CALL") {
     out.statement = Statement::Call;
     ++pos_;
