@@ -203,11 +203,14 @@ void Planner::append_motion(interp::PathElement element) {
     };
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
     const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
+    // A corner-smoothing element is straight at its ends and curved inside: always sampled, so
+    // its curvature limit is seen however short it is (step 1, "Corner smoothing").
+    const double sampling_step = w.element.smoothing_deviation_mm >= 0 ? 0.0 : fine_step;
     // With grouped extra axes the path parameter is not the curve's arc length: the discretiser
     // sees the curve through path_point (equal segments then; the arc rule needs an arc).
     const PathParameterCurve scaled(curve, dyn, length);
     const geometry::Curve& along = dyn.geometry_scale == 1.0 ? curve : scaled;
-    envelope = discretise_element(along, length, fine_step, discretisation_, limits_at, stations);
+    envelope = discretise_element(along, length, sampling_step, discretisation_, limits_at, stations);
     grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
   }
   const size_t n = stations.size() - 1;
@@ -438,6 +441,7 @@ void Planner::commit_front() {
   timing.label = std::move(w.element.label);
   timing.compressed_blocks = w.element.compressed_blocks;
   timing.compress_deviation_mm = w.element.compress_deviation_mm;
+  timing.smoothing_deviation_mm = w.element.smoothing_deviation_mm;
   observer_.on_block(timing);
 
   if (w.segment_count > 0) --motion_in_window_;

@@ -1,0 +1,207 @@
+#include "interp/corner_smoothing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#include <spdlog/spdlog.h>
+
+#include "interp/geometry/line_curve.hpp"
+
+namespace drycut::interp {
+namespace {
+
+using geometry::Vec3;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMinLength = 1e-9;      // mm: shorter elements take no part in a rounding
+constexpr double kMinTurnCos = 0.99999999;  // tangents closer than ~0.0001 rad: no corner
+constexpr double kMaxTurnCos = -0.9999;  // a reversal (more than ~179.2 deg): no rounding
+
+const char* smoothing_label(int code) {
+  switch (code) {
+    case 641: return "G641";
+    case 642: return "G642";
+    case 643: return "G643";
+    default: return "G645";
+  }
+}
+
+// The rounding modes this stage models (G644 is planned as G64).
+bool rounding_code(int code) { return code == 641 || code == 642 || code == 643 || code == 645; }
+
+double programmed_length(const PathElement& e) {
+  return e.block_length_mm > 0 ? e.block_length_mm : e.curve->length();
+}
+
+Vec3 line_direction(const PathElement& e) { return (e.curve->end() - e.curve->start()).normalized(); }
+
+}  // namespace
+
+geometry::PolynomialSpan corner_blend_curve(const Vec3& corner, const Vec3& u1, const Vec3& u2, double trim_mm,
+                                            BlendContinuity continuity) {
+  // As a Hermite span on u in [0, 1]. Cubic Bezier P0, C, C, P3: B'(0) = 3·(C - P0) = 3·d·u1,
+  // B'(1) = 3·d·u2. Quadratic Bezier P0, C, P3: B'(0) = 2·d·u1, B'(1) = 2·d·u2.
+  const double k = continuity == BlendContinuity::Curvature ? 3.0 : 2.0;
+  return geometry::PolynomialSpan::hermite(corner - trim_mm * u1, corner + trim_mm * u2, k * trim_mm * u1,
+                                           k * trim_mm * u2, 1.0);
+}
+
+double blend_deviation_factor(BlendContinuity continuity) {
+  return continuity == BlendContinuity::Curvature ? 1.0 / 8.0 : 1.0 / 4.0;
+}
+
+double corner_blend_deviation(const Vec3& u1, const Vec3& u2, double trim_mm, BlendContinuity continuity) {
+  return blend_deviation_factor(continuity) * trim_mm * (u2 - u1).norm();
+}
+
+BlendContinuity blend_continuity(int code) {
+  return code == 645 ? BlendContinuity::Curvature : BlendContinuity::Tangent;
+}
+
+CornerSmoothing::CornerSmoothing(ElementSink& next, const machine::MachineProfile& profile)
+    : next_(next), profile_(profile) {}
+
+bool CornerSmoothing::holds(const PathElement& e) const {
+  if (e.kind != ElementKind::Line || !e.curve || e.dynamics.exact_stop_this_block) return false;
+  if (e.dynamics.transition != TransitionMode::SmoothDistance && e.dynamics.transition != TransitionMode::SmoothTolerance)
+    return false;
+  if (!rounding_code(e.smoothing.code) || !e.extra_axes.empty() || !e.positioning.empty()) return false;
+  if (e.smoothing.code != 641 && profile_.smoothing.max_axispoly_per_block < 3) return false;  // MD28520
+  return e.curve->length() > kMinLength;
+}
+
+void CornerSmoothing::consume(PathElement element) {
+  if (pending_) {
+    if (round_corner(element)) return;  // it handed on or holds the trimmed element
+    emit_pending();
+  }
+  if (holds(element)) {
+    pending_ = std::move(element);
+  } else {
+    next_.consume(std::move(element));
+  }
+}
+
+void CornerSmoothing::finish() {
+  if (pending_) emit_pending();
+  if (corners_ > 0) spdlog::debug("corner smoothing: {} corners rounded", corners_);
+  next_.finish();
+}
+
+void CornerSmoothing::emit_pending() {
+  PathElement e = std::move(*pending_);
+  pending_.reset();
+  next_.consume(std::move(e));
+}
+
+double CornerSmoothing::trim_distance(const PathElement& a, const PathElement& b, const Vec3& u1, const Vec3& u2,
+                                      double la, double lb) const {
+  const SmoothingRequest& r = a.smoothing;  // the settings of the block that ends at the corner
+  const machine::SmoothingData& data = profile_.smoothing;
+  const bool rapid = a.rapid && b.rapid;
+  const double room = data.max_block_share * std::min(la, lb);
+  const int source = r.code == 641 ? 4 : r.code == 643 ? data.mode % 10 : data.mode / 10 % 10;
+  if (source == 4) {
+    const double wanted = rapid ? r.adispos_mm : r.adis_mm;
+    if (wanted <= 0) return 0.0;
+    const double d = std::min(wanted, room);
+    return d < (1.0 - data.adis_max_reduction) * wanted ? 0.0 : d;
+  }
+  const double g0 = rapid ? data.g0_tolerance_factor : 1.0;
+  // deviation = k·d·|u2 - u1| (per axis k·d·|u2_i - u1_i|): d = tol / (k·|u2 - u1|).
+  const double k = blend_deviation_factor(blend_continuity(r.code));
+  const Vec3 turn = u2 - u1;
+  double d = kInf;
+  if (source == 1 || source == 3) {
+    const double tol = (r.ctol_mm >= 0 ? r.ctol_mm : data.contur_tol_mm) * g0;
+    d = tol / (k * turn.norm());
+  } else {
+    for (int i = 0; i < 3; ++i) {
+      const double tol = (r.atol_mm[i] >= 0 ? r.atol_mm[i] : profile_.axes[static_cast<size_t>(i)].compress_pos_tol_mm) * g0;
+      if (std::abs(turn[i]) > 1e-12) d = std::min(d, tol / (k * std::abs(turn[i])));
+    }
+  }
+  return std::min(d, room);
+}
+
+double CornerSmoothing::programmed_velocity(const PathElement& e, const Vec3& u) const {
+  double v = e.rapid ? kInf : e.feed_mm_s;
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(u[i]) > 1e-12) v = std::min(v, profile_.axes[static_cast<size_t>(i)].max_velocity_mm_s / std::abs(u[i]));
+  return v;
+}
+
+double CornerSmoothing::g64_corner_velocity(const PathElement& a, const Vec3& u1, const Vec3& u2) const {
+  // The planner's CornerConstraint: each axis velocity may jump by a_i·(OVL - 1)·T_IPO.
+  const double group = profile_.dynamic_groups[static_cast<size_t>(a.dynamics.group)].max_ax_accel;
+  const double allowed = (profile_.max_accel_ovl_factor - 1.0) * profile_.ipo_cycle_s * group;
+  double v = kInf;
+  for (int i = 0; i < 3; ++i) {
+    const double jump = std::abs(u2[i] - u1[i]);
+    if (jump > 1e-12) v = std::min(v, profile_.axes[static_cast<size_t>(i)].max_accel_mm_s2 * allowed / jump);
+  }
+  return v;
+}
+
+bool CornerSmoothing::round_corner(PathElement& b) {
+  PathElement& a = *pending_;
+  if (b.kind != ElementKind::Line || !b.curve || b.rapid != a.rapid || b.dynamics.profile != a.dynamics.profile ||
+      !b.extra_axes.empty() || !b.positioning.empty())
+    return false;
+  const double lb = b.curve->length();
+  const Vec3 corner = a.curve->end();
+  if (lb <= kMinLength || (b.curve->start() - corner).norm() > 1e-9 * (1.0 + corner.norm())) return false;
+  const Vec3 u1 = line_direction(a), u2 = line_direction(b);
+  const double cos_turn = u1.dot(u2);
+  if (cos_turn > kMinTurnCos || cos_turn < kMaxTurnCos) return false;
+  const double v = std::min(programmed_velocity(a, u1), programmed_velocity(b, u2));
+  const bool check_ovl = a.smoothing.code != 643 && !profile_.smoothing.ignore_ovl_factor;
+  if (check_ovl && g64_corner_velocity(a, u1, u2) >= v) return false;  // G64 passes without slowing
+  const double la = programmed_length(a);
+  const double d = trim_distance(a, b, u1, u2, la, lb);
+  if (d <= kMinLength) return false;
+
+  const BlendContinuity continuity = blend_continuity(a.smoothing.code);
+  auto blend_curve = std::make_shared<geometry::PolynomialSpan>(corner_blend_curve(corner, u1, u2, d, continuity));
+  // The rounding is a block: at least one IPO cycle (short-block rule). Where that holds it to
+  // no more than G64 allows at the corner, it would slow the path: none (FB1 "very short blocks").
+  const double block_velocity = profile_.short_block_factor * blend_curve->length() / profile_.ipo_cycle_s;
+  if (block_velocity <= std::min(v, g64_corner_velocity(a, u1, u2))) return false;
+
+  PathElement blend;
+  blend.kind = ElementKind::SplineSpan;
+  blend.curve = std::move(blend_curve);
+  blend.rapid = a.rapid;
+  blend.feed_mm_s = std::min(a.feed_mm_s, b.feed_mm_s);
+  blend.feed_scale = a.feed_scale;
+  blend.inserted = true;
+  blend.dynamics = a.dynamics;
+  blend.compensation = a.compensation;
+  blend.label = smoothing_label(a.smoothing.code);
+  blend.source = a.source;
+  blend.smoothing = a.smoothing;
+  blend.smoothing_deviation_mm = corner_blend_deviation(u1, u2, d, continuity);
+  blend.compressor = a.compressor;
+
+  a.block_length_mm = la;
+  const Vec3 a_start = a.curve->start();
+  a.curve = std::make_shared<geometry::LineCurve>(a_start, corner - d * u1);
+  if (a.curve->length() > kMinLength) next_.consume(std::move(a));  // else the rounding took all of it
+  pending_.reset();
+  next_.consume(std::move(blend));
+  ++corners_;
+
+  b.block_length_mm = lb;
+  b.curve = std::make_shared<geometry::LineCurve>(corner + d * u2, b.curve->end());
+  if (holds(b)) {
+    pending_ = std::move(b);
+  } else {
+    next_.consume(std::move(b));
+  }
+  return true;
+}
+
+}  // namespace drycut::interp
