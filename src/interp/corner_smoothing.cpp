@@ -129,6 +129,9 @@ double CornerSmoothing::trim_distance(const PathElement& a, const PathElement& b
 
 double CornerSmoothing::programmed_velocity(const PathElement& e, const Vec3& u) const {
   double v = e.rapid ? kInf : e.feed_mm_s;
+  // The short-block rule (a block lasts at least one IPO cycle): between very short blocks G64
+  // does not slow down at the corner below what the blocks allow anyway.
+  if (!e.inserted) v = std::min(v, profile_.short_block_factor * programmed_length(e) / profile_.ipo_cycle_s);
   for (int i = 0; i < 3; ++i)
     if (std::abs(u[i]) > 1e-12) v = std::min(v, profile_.axes[static_cast<size_t>(i)].max_velocity_mm_s / std::abs(u[i]));
   return v;
@@ -142,6 +145,28 @@ double CornerSmoothing::g64_corner_velocity(const PathElement& a, const Vec3& u1
   for (int i = 0; i < 3; ++i) {
     const double jump = std::abs(u2[i] - u1[i]);
     if (jump > 1e-12) v = std::min(v, profile_.axes[static_cast<size_t>(i)].max_accel_mm_s2 * allowed / jump);
+  }
+  return v;
+}
+
+double CornerSmoothing::rounding_velocity(const geometry::Curve& curve, const PathElement& a) const {
+  // The planner's point limits (motion/path_constraints.hpp) at 9 points of the rounding:
+  // centripetal v^2 |kappa_i| <= share a_i and, under SOFT, v^3 |d3P/ds3_i| <= j_i.
+  const auto& group = profile_.dynamic_groups[static_cast<size_t>(a.dynamics.group)];
+  const bool soft = a.dynamics.profile == AccelProfile::Soft;
+  const double accel_factor = a.rapid ? profile_.g0_accel_factor : (soft ? profile_.soft_accel_factor : 1.0);
+  const double jerk_factor = a.rapid ? profile_.g0_jerk_factor : 1.0;
+  double v = kInf;
+  for (int k = 0; k <= 8; ++k) {
+    const geometry::CurvePoint p = curve.at(curve.length() * k / 8.0);
+    for (int i = 0; i < 3; ++i) {
+      const auto& axis = profile_.axes[static_cast<size_t>(i)];
+      const double kappa = std::abs(p.curvature_vector[i]), rate = std::abs(p.curvature_rate[i]);
+      if (kappa > 1e-15)
+        v = std::min(v, std::sqrt(profile_.curv_effect_on_path_accel * axis.max_accel_mm_s2 * group.max_ax_accel *
+                                  accel_factor / kappa));
+      if (soft && rate > 1e-15) v = std::min(v, std::cbrt(axis.max_jerk_mm_s3 * group.max_ax_jerk * jerk_factor / rate));
+    }
   }
   return v;
 }
@@ -169,7 +194,11 @@ bool CornerSmoothing::round_corner(PathElement& b) {
   // The rounding is a block: at least one IPO cycle (short-block rule). Where that holds it to
   // no more than G64 allows at the corner, it would slow the path: none (FB1 "very short blocks").
   const double block_velocity = profile_.short_block_factor * blend_curve->length() / profile_.ipo_cycle_s;
-  if (block_velocity <= std::min(v, g64_corner_velocity(a, u1, u2))) return false;
+  const double g64_velocity = std::min(v, g64_corner_velocity(a, u1, u2));
+  if (block_velocity <= g64_velocity) return false;
+  // Nor where its curvature holds the path below the G64 corner velocity (tiny roundings under
+  // SOFT): drycut's reading of "the rounding block would slow down the program" (FB1).
+  if (rounding_velocity(*blend_curve, a) <= g64_velocity) return false;
 
   PathElement blend;
   blend.kind = ElementKind::SplineSpan;

@@ -43,9 +43,10 @@
 //   The rounding element (SplineSpan, inserted, labelled "G641".."G645") carries the block of
 //   the corner, the lower feed of the two and its deviation (smoothing_deviation_mm); the trimmed
 //   neighbours keep the length of their programmed blocks for the short-block rule, and the
-//   rounding is a block for it too. No rounding where that rule would hold the rounding to no
-//   more than G64 allows at the corner (it would slow the path), or when either element moves
-//   extra axes or positioning axes.
+//   rounding is a block for it too. No rounding where that rule, or the rounding's own
+//   curvature limits (centripetal acceleration, SOFT curvature jerk, sampled at 9 points),
+//   would hold the path to no more than G64 allows at the corner (it would slow the path), or
+//   when either element moves extra axes or positioning axes.
 //   Not modelled (the transition stays G64): arcs and splines (the Curve interface has no
 //   trimming), G645's rounding of tangential transitions with a curvature step (lines have none
 //   between them; MD33120), G644, orientation tolerances (OTOL, SD42466).
@@ -92,10 +93,13 @@ class CornerSmoothing final : public ElementSink {
   // pending element and the rounding, then holds or hands on b with its start trimmed.
   // False: nothing changed (b is still the caller's).
   bool round_corner(PathElement& b);
-  // The velocity G64 would allow at the corner (overload-factor rule) and the programmed
-  // velocity there; rounding only where the first is lower (unless G643 or MD20490).
+  // The velocity G64 would allow at the corner (overload-factor rule) and the velocity the
+  // blocks allow there without it (F, axis velocities, the short-block rule); rounding only
+  // where the first is lower (unless G643 or MD20490).
   double g64_corner_velocity(const PathElement& a, const geometry::Vec3& u1, const geometry::Vec3& u2) const;
   double programmed_velocity(const PathElement& e, const geometry::Vec3& u) const;
+  // The lowest velocity the rounding's curvature allows (centripetal, SOFT curvature jerk).
+  double rounding_velocity(const geometry::Curve& curve, const PathElement& a) const;
   void emit_pending();
 
   ElementSink& next_;

@@ -120,7 +120,7 @@ TEST(CornerSmoothing, RandomPolylinesStayInTheBandAndTangentContinuous) {
       for (auto& a : p.axes) a.compress_pos_tol_mm = tol;
     const double band = contour ? tol : tol * std::sqrt(3.0);  // per-axis tol: at most |tol vector|
     const bool g645 = trial % 4 < 2;
-    std::string text = std::string("G0 X0 Y0 Z0\n") + (g645 ? "G645" : "G643") + " SOFT F600\n";
+    std::string text = std::string("G0 X0 Y0 Z0\n") + (g645 ? "G645" : "G643") + " BRISK F600\n";
     Vec3 at = Vec3::Zero();
     for (int i = 0; i < 30; ++i) {
       at += Vec3(step(rng), step(rng), i % 3 == 0 ? 0.3 * step(rng) : 0.0);
@@ -183,6 +183,18 @@ TEST(CornerSmoothing, RoundsOnlyWhereG64WouldSlowDownUnlessG643OrMd20490) {
   EXPECT_EQ(smoothed("G643 " + bend, p).out.size(), 4u);  // G643 ignores the overload factor
   p.smoothing.ignore_ovl_factor = true;
   EXPECT_EQ(smoothed("G642 " + bend, p).out.size(), 4u);
+}
+
+TEST(CornerSmoothing, NoRoundingWhereItsCurvatureWouldBeSlowerThanTheG64Corner) {
+  // ATOL 0.005 on X and Y: d = 4 * 0.005 = 0.02 mm at a 90-degree corner. G64 allows 4 mm/s
+  // there. BRISK: |kappa_i| <= |u2_i - u1_i| / (2d cos²45°) = 50 /mm on the rounding, so its
+  // centripetal limit is at least sqrt(0.75 * 5000 / 50) = 8.7 mm/s: rounded. SOFT (axis jerk
+  // 50 m/s³, nothing else differs): its curvature jerk holds it below 4 mm/s: the rounding
+  // would slow the path, the corner stays G64.
+  const auto p = testing::test_profile();
+  const std::string body = " F3000\nATOL[X]=0.005 ATOL[Y]=0.005\nG1 X10\nY10\nM30\n";
+  EXPECT_EQ(smoothed("G0 X0 Y0 Z0\nG642 BRISK" + body, p).out.size(), 4u);
+  EXPECT_EQ(smoothed("G0 X0 Y0 Z0\nG642 SOFT" + body, p).out.size(), 3u);
 }
 
 TEST(CornerSmoothing, CtolAndAtolOverrideTheDataAndNegativeRestoresThem) {
