@@ -8,7 +8,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "interp/geometry/line_curve.hpp"
+#include "interp/geometry/trimmed_curve.hpp"
 
 namespace drycut::interp {
 namespace {
@@ -36,7 +36,12 @@ double programmed_length(const PathElement& e) {
   return e.block_length_mm > 0 ? e.block_length_mm : e.curve->length();
 }
 
-Vec3 line_direction(const PathElement& e) { return (e.curve->end() - e.curve->start()).normalized(); }
+bool roundable_kind(const PathElement& e) {
+  return (e.kind == ElementKind::Line || e.kind == ElementKind::Arc || e.kind == ElementKind::SplineSpan) && e.curve &&
+         e.smoothing_deviation_mm < 0;
+}
+
+bool is_line(const PathElement& e) { return e.kind == ElementKind::Line; }
 
 }  // namespace
 
@@ -65,7 +70,7 @@ CornerSmoothing::CornerSmoothing(ElementSink& next, const machine::MachineProfil
     : next_(next), profile_(profile) {}
 
 bool CornerSmoothing::holds(const PathElement& e) const {
-  if (e.kind != ElementKind::Line || !e.curve || e.dynamics.exact_stop_this_block) return false;
+  if (!roundable_kind(e) || e.dynamics.exact_stop_this_block) return false;
   if (e.dynamics.transition != TransitionMode::SmoothDistance && e.dynamics.transition != TransitionMode::SmoothTolerance)
     return false;
   if (!rounding_code(e.smoothing.code) || !e.extra_axes.empty() || !e.positioning.empty()) return false;
@@ -97,32 +102,43 @@ void CornerSmoothing::emit_pending() {
   next_.consume(std::move(e));
 }
 
-double CornerSmoothing::trim_distance(const PathElement& a, const PathElement& b, const Vec3& u1, const Vec3& u2,
-                                      double la, double lb) const {
+CornerSmoothing::Tolerance CornerSmoothing::tolerance(const PathElement& a, const PathElement& b) const {
   const SmoothingRequest& r = a.smoothing;  // the settings of the block that ends at the corner
   const machine::SmoothingData& data = profile_.smoothing;
   const bool rapid = a.rapid && b.rapid;
-  const double room = data.max_block_share * std::min(la, lb);
+  Tolerance t;
   const int source = r.code == 641 ? 4 : r.code == 643 ? data.mode % 10 : data.mode / 10 % 10;
   if (source == 4) {
-    const double wanted = rapid ? r.adispos_mm : r.adis_mm;
-    if (wanted <= 0) return 0.0;
-    const double d = std::min(wanted, room);
-    return d < (1.0 - data.adis_max_reduction) * wanted ? 0.0 : d;
+    t.kind = Tolerance::Distance;
+    t.distance = rapid ? r.adispos_mm : r.adis_mm;
+    return t;
   }
   const double g0 = rapid ? data.g0_tolerance_factor : 1.0;
+  t.kind = source == 1 || source == 3 ? Tolerance::Contour : Tolerance::Axes;
+  t.contour = (r.ctol_mm >= 0 ? r.ctol_mm : data.contur_tol_mm) * g0;
+  for (int i = 0; i < 3; ++i)
+    t.axes[i] = (r.atol_mm[i] >= 0 ? r.atol_mm[i] : profile_.axes[static_cast<size_t>(i)].compress_pos_tol_mm) * g0;
+  return t;
+}
+
+double CornerSmoothing::trim_distance(const PathElement& a, const PathElement& b, const Vec3& u1, const Vec3& u2,
+                                      double la, double lb) const {
+  const Tolerance t = tolerance(a, b);
+  const double room = profile_.smoothing.max_block_share * std::min(la, lb);
+  if (t.kind == Tolerance::Distance) {
+    if (t.distance <= 0) return 0.0;
+    const double d = std::min(t.distance, room);
+    return d < (1.0 - profile_.smoothing.adis_max_reduction) * t.distance ? 0.0 : d;
+  }
   // deviation = k·d·|u2 - u1| (per axis k·d·|u2_i - u1_i|): d = tol / (k·|u2 - u1|).
-  const double k = blend_deviation_factor(blend_continuity(r.code));
+  const double k = blend_deviation_factor(blend_continuity(a.smoothing.code));
   const Vec3 turn = u2 - u1;
   double d = kInf;
-  if (source == 1 || source == 3) {
-    const double tol = (r.ctol_mm >= 0 ? r.ctol_mm : data.contur_tol_mm) * g0;
-    d = tol / (k * turn.norm());
+  if (t.kind == Tolerance::Contour) {
+    d = t.contour / (k * turn.norm());
   } else {
-    for (int i = 0; i < 3; ++i) {
-      const double tol = (r.atol_mm[i] >= 0 ? r.atol_mm[i] : profile_.axes[static_cast<size_t>(i)].compress_pos_tol_mm) * g0;
-      if (std::abs(turn[i]) > 1e-12) d = std::min(d, tol / (k * std::abs(turn[i])));
-    }
+    for (int i = 0; i < 3; ++i)
+      if (std::abs(turn[i]) > 1e-12) d = std::min(d, t.axes[i] / (k * std::abs(turn[i])));
   }
   return std::min(d, room);
 }
@@ -171,38 +187,74 @@ double CornerSmoothing::rounding_velocity(const geometry::Curve& curve, const Pa
   return v;
 }
 
+std::optional<CornerSmoothing::Rounding> CornerSmoothing::fit_rounding(const PathElement& a, const PathElement& b,
+                                                                       const Vec3& u1, const Vec3& u2,
+                                                                       double d) const {
+  const Vec3 corner = a.curve->end();
+  const BlendContinuity continuity = blend_continuity(a.smoothing.code);
+  if (is_line(a) && is_line(b)) {  // closed form (corner_smoothing.hpp)
+    return Rounding{std::make_shared<geometry::PolynomialSpan>(corner_blend_curve(corner, u1, u2, d, continuity)), d,
+                    corner_blend_deviation(u1, u2, d, continuity)};
+  }
+  // An arc or spline neighbour: the same Bezier shape between the points d before and after the
+  // corner along the curves, with their tangents there (tangent-continuous; the curvature of a
+  // curved neighbour is not matched). Its deviation is measured (the closest of 65 points to the
+  // corner); outside the tolerance d shrinks by a quarter, at most 8 times.
+  const Tolerance t = tolerance(a, b);
+  const double k = continuity == BlendContinuity::Curvature ? 3.0 : 2.0;
+  const double la = a.curve->length();
+  for (int attempt = 0; attempt < 8; ++attempt, d *= 0.75) {
+    const geometry::CurvePoint p0 = a.curve->at(la - d), p3 = b.curve->at(d);
+    auto span = std::make_shared<geometry::PolynomialSpan>(
+        geometry::PolynomialSpan::hermite(p0.position, p3.position, k * d * p0.tangent, k * d * p3.tangent, 1.0));
+    Vec3 offset = p0.position - corner;
+    for (int i = 1; i <= 64; ++i) {
+      const Vec3 q = span->derivatives(i / 64.0).p - corner;
+      if (q.squaredNorm() < offset.squaredNorm()) offset = q;
+    }
+    bool within = true;
+    if (t.kind == Tolerance::Contour) within = offset.norm() <= t.contour;
+    if (t.kind == Tolerance::Axes)
+      for (int i = 0; i < 3; ++i) within = within && std::abs(offset[i]) <= t.axes[i];
+    if (within) return Rounding{std::move(span), d, offset.norm()};
+  }
+  return std::nullopt;
+}
+
 bool CornerSmoothing::round_corner(PathElement& b) {
   PathElement& a = *pending_;
-  if (b.kind != ElementKind::Line || !b.curve || b.rapid != a.rapid || b.dynamics.profile != a.dynamics.profile ||
-      !b.extra_axes.empty() || !b.positioning.empty())
+  if (!roundable_kind(b) || b.rapid != a.rapid || b.dynamics.profile != a.dynamics.profile || !b.extra_axes.empty() ||
+      !b.positioning.empty())
     return false;
   const double lb = b.curve->length();
   const Vec3 corner = a.curve->end();
   if (lb <= kMinLength || (b.curve->start() - corner).norm() > 1e-9 * (1.0 + corner.norm())) return false;
-  const Vec3 u1 = line_direction(a), u2 = line_direction(b);
+  const Vec3 u1 = a.curve->at(a.curve->length()).tangent, u2 = b.curve->at(0.0).tangent;
   const double cos_turn = u1.dot(u2);
   if (cos_turn > kMinTurnCos || cos_turn < kMaxTurnCos) return false;
   const double v = std::min(programmed_velocity(a, u1), programmed_velocity(b, u2));
+  const double g64_velocity = std::min(v, g64_corner_velocity(a, u1, u2));
   const bool check_ovl = a.smoothing.code != 643 && !profile_.smoothing.ignore_ovl_factor;
-  if (check_ovl && g64_corner_velocity(a, u1, u2) >= v) return false;  // G64 passes without slowing
-  const double la = programmed_length(a);
-  const double d = trim_distance(a, b, u1, u2, la, lb);
+  if (check_ovl && g64_velocity >= v) return false;  // G64 passes without slowing
+  const double d = trim_distance(a, b, u1, u2, programmed_length(a), lb);
   if (d <= kMinLength) return false;
-
-  const BlendContinuity continuity = blend_continuity(a.smoothing.code);
-  auto blend_curve = std::make_shared<geometry::PolynomialSpan>(corner_blend_curve(corner, u1, u2, d, continuity));
+  std::optional<Rounding> rounding = fit_rounding(a, b, u1, u2, d);
+  if (!rounding) return false;
   // The rounding is a block: at least one IPO cycle (short-block rule). Where that holds it to
   // no more than G64 allows at the corner, it would slow the path: none (FB1 "very short blocks").
-  const double block_velocity = profile_.short_block_factor * blend_curve->length() / profile_.ipo_cycle_s;
-  const double g64_velocity = std::min(v, g64_corner_velocity(a, u1, u2));
-  if (block_velocity <= g64_velocity) return false;
   // Nor where its curvature holds the path below the G64 corner velocity (tiny roundings under
   // SOFT): drycut's reading of "the rounding block would slow down the program" (FB1).
-  if (rounding_velocity(*blend_curve, a) <= g64_velocity) return false;
+  if (profile_.short_block_factor * rounding->curve->length() / profile_.ipo_cycle_s <= g64_velocity) return false;
+  if (rounding_velocity(*rounding->curve, a) <= g64_velocity) return false;
+  hand_on(b, std::move(*rounding));
+  return true;
+}
 
+void CornerSmoothing::hand_on(PathElement& b, Rounding rounding) {
+  PathElement& a = *pending_;
   PathElement blend;
   blend.kind = ElementKind::SplineSpan;
-  blend.curve = std::move(blend_curve);
+  blend.curve = std::move(rounding.curve);
   blend.rapid = a.rapid;
   blend.feed_mm_s = std::min(a.feed_mm_s, b.feed_mm_s);
   blend.feed_scale = a.feed_scale;
@@ -212,25 +264,28 @@ bool CornerSmoothing::round_corner(PathElement& b) {
   blend.label = smoothing_label(a.smoothing.code);
   blend.source = a.source;
   blend.smoothing = a.smoothing;
-  blend.smoothing_deviation_mm = corner_blend_deviation(u1, u2, d, continuity);
+  blend.smoothing_deviation_mm = rounding.deviation;
   blend.compressor = a.compressor;
 
-  a.block_length_mm = la;
-  const Vec3 a_start = a.curve->start();
-  a.curve = std::make_shared<geometry::LineCurve>(a_start, corner - d * u1);
-  if (a.curve->length() > kMinLength) next_.consume(std::move(a));  // else the rounding took all of it
+  const double d = rounding.trim;
+  a.block_length_mm = programmed_length(a);
+  const double la = a.curve->length();
+  if (la - d > kMinLength) {  // else the rounding took all that was left of it
+    a.curve = geometry::trim_curve(a.curve, 0.0, la - d);
+    next_.consume(std::move(a));
+  }
   pending_.reset();
   next_.consume(std::move(blend));
   ++corners_;
 
-  b.block_length_mm = lb;
-  b.curve = std::make_shared<geometry::LineCurve>(corner + d * u2, b.curve->end());
+  const double lb = b.curve->length();
+  b.block_length_mm = programmed_length(b);
+  b.curve = geometry::trim_curve(b.curve, d, lb);
   if (holds(b)) {
     pending_ = std::move(b);
   } else {
     next_.consume(std::move(b));
   }
-  return true;
 }
 
 }  // namespace drycut::interp

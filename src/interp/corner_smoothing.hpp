@@ -18,8 +18,8 @@
 //   change BRISK/SOFT or a block without path motion. G642..G645 need MD28520 >= 3.
 //
 // WHAT DRYCUT DOES
-//   A corner is the joint of two Line elements whose tangents u1 (into the corner C) and u2 (out
-//   of it) differ. The rounding starts d before C on the first line and ends d after it on the
+//   A corner is the joint of two motion elements (lines, arcs, spline spans, compressor spans)
+//   whose tangents u1 (into the corner C) and u2 (out of it) differ. The rounding starts d before C on the first line and ends d after it on the
 //   second, as a Bezier curve with its inner control point(s) at the corner:
 //     G641/G642/G643: the QUADRATIC P0 = C - d·u1, P1 = C, P2 = C + d·u2. Its second derivative
 //       is constant: traversed at a steady parameter rate every axis accelerates constantly,
@@ -47,9 +47,15 @@
 //   curvature limits (centripetal acceleration, SOFT curvature jerk, sampled at 9 points),
 //   would hold the path to no more than G64 allows at the corner (it would slow the path), or
 //   when either element moves extra axes or positioning axes.
-//   Not modelled (the transition stays G64): arcs and splines (the Curve interface has no
-//   trimming), G645's rounding of tangential transitions with a curvature step (lines have none
-//   between them; MD33120), G644, orientation tolerances (OTOL, SD42466).
+//   At an arc or spline neighbour (geometry/trimmed_curve.hpp cuts it: an arc stays an ArcCurve)
+//   the same Bezier shape runs between the points d along the curves before and after C, with
+//   the curves' tangents there: tangent-continuous, the neighbour's curvature not matched (G645
+//   too). d comes from the tangents at C as above; the deviation is then measured (the closest
+//   of 65 points to C) and d shrinks by a quarter (at most 8 times) until it is within the
+//   tolerance, else no rounding.
+//   Not modelled (the transition stays G64): G645's rounding of tangential transitions with a
+//   curvature step (line into a tangent arc; MD33120), G644, orientation tolerances (OTOL,
+//   SD42466).
 // Memory: one held element. Without a rounding mode at an element's end it passes at once.
 #include <cstdint>
 #include <optional>
@@ -88,6 +94,23 @@ class CornerSmoothing final : public ElementSink {
   uint64_t corners_rounded() const { return corners_; }
 
  private:
+  // Where the tolerance comes from at the corner after `a` (MD20480 digit, CTOL/ATOL, G0 factor).
+  struct Tolerance {
+    enum Kind { Distance, Contour, Axes } kind = Axes;
+    double distance = 0, contour = 0;
+    geometry::Vec3 axes = geometry::Vec3::Zero();
+  };
+  struct Rounding {
+    geometry::CurvePtr curve;
+    double trim = 0;       // d, along each neighbour
+    double deviation = 0;  // closest distance to the corner
+  };
+  Tolerance tolerance(const PathElement& a, const PathElement& b) const;
+  // The rounding with trim d (lines: closed form; curves: shrunk until within the tolerance).
+  std::optional<Rounding> fit_rounding(const PathElement& a, const PathElement& b, const geometry::Vec3& u1,
+                                       const geometry::Vec3& u2, double d) const;
+  // Hands on the trimmed pending element and the rounding; holds or hands on b, trimmed.
+  void hand_on(PathElement& b, Rounding rounding);
   bool holds(const PathElement& e) const;
   // Rounds the corner between pending_ and b when the rules allow: hands on the trimmed
   // pending element and the rounding, then holds or hands on b with its start trimmed.

@@ -130,26 +130,29 @@ TEST(CamFinishingProgram, ChecksAndRunsWithTheHandComputedBlocksAndLength) {
   // G0 Z50, G0 SUPA Z280). CYCLE832 selects COMPCAD: the toolpath is the compressed curve,
   // within the tolerance of the polyline, so its length is that of the polyline up to a small
   // share (the 0.5 mm blocks of a pass are joined into smooth spans; the corners at the pass
-  // ends are kept by COMPCAD and then rounded by G642, each rounding a little shorter than the
-  // corner it cuts: docs/smoothing.md).
+  // ends are kept by COMPCAD and then rounded by G642 within MD33100, each rounding up to about
+  // 0.15 mm shorter than the corner it cuts, about 160 of them: docs/smoothing.md).
   const auto& s = j["summary"];
-  EXPECT_NEAR(s["path_length_mm"].get<double>(), generated_path, 2e-4 * generated_path);
+  EXPECT_NEAR(s["path_length_mm"].get<double>(), generated_path, 5e-3 * generated_path);
   EXPECT_LT(s["path_length_mm"].get<double>(), generated_path);
   // Block rows are arrays in the order of "block_columns" (docs/schemas/run.schema.json).
   const auto& columns = j["block_columns"];
   const auto column = [&columns](const char* name) {
     return static_cast<size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
   };
-  const size_t rapid = column("rapid"), length = column("length_mm");
+  const size_t rapid = column("rapid"), length = column("length_mm"), label = column("label");
   ASSERT_LT(rapid, columns.size());
   ASSERT_LT(length, columns.size());
   double g1 = 0, g0 = 0;
   size_t compressed_blocks = 0;
   for (const auto& row : j["blocks"]) {
     (row[rapid].get<bool>() ? g0 : g1) += row[length].get<double>();
-    if (row.size() > columns.size()) compressed_blocks += row[columns.size()].get<size_t>();
+    // A compressor span has two more values; a G642 rounding one more (smoothing_deviation_mm).
+    if (row.size() > columns.size() && row[label] != "G642") compressed_blocks += row[columns.size()].get<size_t>();
   }
-  EXPECT_NEAR(g1, generated_g1, 1e-4 * generated_g1);
+  // The G642 roundings cut the pass-end corners (about 0.3 % of the G1 length, see above).
+  EXPECT_NEAR(g1, generated_g1, 5e-3 * generated_g1);
+  EXPECT_LT(g1, generated_g1);
   EXPECT_GT(compressed_blocks, 12000u);  // nearly all of the 13040 toolpath blocks
 
   // End: the last point X80 Y60 of the workpiece, turned by AROT Z15 and shifted by TRANS X50

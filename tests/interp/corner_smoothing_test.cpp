@@ -7,7 +7,9 @@
 #include <cmath>
 #include <random>
 
+#include "interp/block_compressor.hpp"
 #include "interp/corner_smoothing.hpp"
+#include "interp/geometry/arc_curve.hpp"
 #include "interp_test_support.hpp"
 
 namespace drycut::interp {
@@ -235,6 +237,86 @@ TEST(CornerSmoothing, G64AndShortPolyLimitPassUntouched) {
   EXPECT_EQ(smoothed("G642 " + square, few).out.size(), 5u);
   EXPECT_EQ(smoothed("G642 " + square, p).out.size(), 8u);
   EXPECT_EQ(smoothed("G641 ADIS=1 " + square, few).out.size(), 8u);  // G641 needs no polynomials
+}
+
+}  // namespace
+}  // namespace drycut::interp
+
+namespace drycut::interp {
+namespace {
+
+using geometry::Vec3;
+
+// Distance from p to a curve sampled densely (independent of the stage: a fine polyline).
+double distance_to_curve(const Vec3& p, const geometry::Curve& c) {
+  double best = 1e300;
+  Vec3 prev = c.at(0).position;
+  for (int k = 1; k <= 20000; ++k) {
+    const Vec3 q = c.at(c.length() * k / 20000.0).position, ab = q - prev;
+    const double t = std::clamp((p - prev).dot(ab) / std::max(ab.squaredNorm(), 1e-30), 0.0, 1.0);
+    best = std::min(best, (p - (prev + t * ab)).norm());
+    prev = q;
+  }
+  return best;
+}
+
+TEST(CornerSmoothingCurves, LineIntoArcIsRoundedWithinTheContourTolerance) {
+  // X0 -> X10, then G2 about (15, 0) r = 5 from (10, 0) to (20, 0): the arc starts upwards (+Y),
+  // a 90-degree corner. G642 with the contour tolerance 0.05 mm.
+  auto p = testing::test_profile();
+  p.smoothing.mode = 10;
+  p.smoothing.contur_tol_mm = 0.05;
+  const auto run = testing::run_program("G0 X0 Y0 Z0\nG642 F2000\nG1 X10\nG2 X20 Y0 I5 J0\nM30\n", p);
+  ASSERT_FALSE(run->alarm);
+  const auto programmed = run->sink.motions();
+  testing::CollectingSink out;
+  CornerSmoothing stage(out, p);
+  for (auto& e : run->sink.elements) stage.consume(e);
+  stage.finish();
+  const auto m = out.motions();
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[2].label, "G642");
+  EXPECT_LE(m[2].smoothing_deviation_mm, 0.05);
+  EXPECT_GT(m[2].smoothing_deviation_mm, 0.01);  // it uses the tolerance, not a tiny share of it
+  // The trimmed arc is still a circle (the planner keeps its closed form) on the programmed one.
+  const auto* arc = dynamic_cast<const geometry::ArcCurve*>(m[3].curve.get());
+  ASSERT_NE(arc, nullptr);
+  EXPECT_NEAR((arc->at(0).position - Vec3(15, 0, 0)).norm(), 5.0, 1e-9);
+  EXPECT_NEAR((m[3].curve->end() - Vec3(20, 0, 0)).norm(), 0, 1e-9);
+  for (size_t i = 1; i < m.size(); ++i) {
+    const auto& c = *m[i].curve;
+    for (int k = 0; k <= 100; ++k) {
+      const Vec3 q = c.at(c.length() * k / 100.0).position;
+      const double dist = std::min(distance_to_curve(q, *programmed[1].curve), distance_to_curve(q, *programmed[2].curve));
+      ASSERT_LE(dist, 0.05 + 1e-6) << "element " << i << " sample " << k;
+    }
+    const auto& prev = *m[i - 1].curve;
+    EXPECT_LT((c.start() - prev.end()).norm(), 1e-9);
+    if (i >= 2) EXPECT_LT((c.at(0).tangent - prev.at(prev.length()).tangent).norm(), 1e-9) << i;
+  }
+}
+
+TEST(CornerSmoothingCurves, CompcadKeptCornerIsRounded) {
+  // COMPCAD keeps the 90-degree corner (SD42470): two straight spans meet at (10, 0); G642 then
+  // rounds it (as on the control, where CYCLE832 selects both).
+  std::string text = "G0 X0 Y0 Z0\nG642 COMPCAD F3000\n";
+  for (int i = 1; i <= 10; ++i) text += "G1 X" + std::to_string(i) + "\n";
+  for (int i = 1; i <= 10; ++i) text += "G1 Y" + std::to_string(i) + "\n";
+  auto p = testing::test_profile();
+  const auto run = testing::run_program(text + "M30\n", p);
+  testing::CollectingSink out;
+  CornerSmoothing smoothing(out, p);
+  BlockCompressor compressor(smoothing, p);
+  for (auto& e : run->sink.elements) compressor.consume(e);
+  compressor.finish();
+  const auto m = out.motions();
+  size_t rounded = 0;
+  for (size_t i = 1; i < m.size(); ++i) {
+    if (m[i].label == "G642") ++rounded;
+    const auto& prev = *m[i - 1].curve;
+    EXPECT_LT((m[i].curve->start() - prev.end()).norm(), 1e-9) << i;
+  }
+  EXPECT_EQ(rounded, 1u);
 }
 
 }  // namespace
