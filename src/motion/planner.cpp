@@ -203,14 +203,19 @@ void Planner::append_motion(interp::PathElement element) {
     };
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
     const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
-    // A corner-smoothing element is straight at its ends and curved inside: always sampled, so
-    // its curvature limit is seen however short it is (step 1, "Corner smoothing").
-    const double sampling_step = w.element.smoothing_deviation_mm >= 0 ? 0.0 : fine_step;
+    // A corner-smoothing rounding is curved inside and its curvature changes fast: one up to
+    // 8 h long gets 8 equal segments (its middle, where the curvature peaks, is a node), a
+    // longer one is sampled as any span (step 1 and 8, "Corner smoothing").
+    DiscretisationRule rule = discretisation_;
+    if (w.element.smoothing_deviation_mm >= 0 && !rule.equal_segments && length <= 8 * fine_step) {
+      rule.equal_segments = true;
+      rule.fixed_segment_mm = length / 8 * (1 + 1e-12);
+    }
     // With grouped extra axes the path parameter is not the curve's arc length: the discretiser
     // sees the curve through path_point (equal segments then; the arc rule needs an arc).
     const PathParameterCurve scaled(curve, dyn, length);
     const geometry::Curve& along = dyn.geometry_scale == 1.0 ? curve : scaled;
-    envelope = discretise_element(along, length, sampling_step, discretisation_, limits_at, stations);
+    envelope = discretise_element(along, length, fine_step, rule, limits_at, stations);
     grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
   }
   const size_t n = stations.size() - 1;
