@@ -165,7 +165,7 @@ double CornerSmoothing::g64_corner_velocity(const PathElement& a, const Vec3& u1
   return v;
 }
 
-double CornerSmoothing::rounding_velocity(const geometry::Curve& curve, const PathElement& a) const {
+double CornerSmoothing::rounding_velocity(const geometry::PolynomialSpan& curve, const PathElement& a) const {
   // The planner's point limits (motion/path_constraints.hpp) at 9 points of the rounding:
   // centripetal v^2 |kappa_i| <= share a_i and, under SOFT, v^3 |d3P/ds3_i| <= j_i.
   const auto& group = profile_.dynamic_groups[static_cast<size_t>(a.dynamics.group)];
@@ -174,7 +174,9 @@ double CornerSmoothing::rounding_velocity(const geometry::Curve& curve, const Pa
   const double jerk_factor = a.rapid ? profile_.g0_jerk_factor : 1.0;
   double v = kInf;
   for (int k = 0; k <= 8; ++k) {
-    const geometry::CurvePoint p = curve.at(curve.length() * k / 8.0);
+    // By parameter (the arc-length inversion of at() would cost more than the rest of the stage).
+    const geometry::CurvePoint p =
+        geometry::PolynomialSpan::by_arc_length(curve.derivatives(curve.parameter_end() * k / 8.0));
     for (int i = 0; i < 3; ++i) {
       const auto& axis = profile_.axes[static_cast<size_t>(i)];
       const double kappa = std::abs(p.curvature_vector[i]), rate = std::abs(p.curvature_rate[i]);

@@ -101,7 +101,7 @@ class CornerSmoothing final : public ElementSink {
     geometry::Vec3 axes = geometry::Vec3::Zero();
   };
   struct Rounding {
-    geometry::CurvePtr curve;
+    std::shared_ptr<const geometry::PolynomialSpan> curve;
     double trim = 0;       // d, along each neighbour
     double deviation = 0;  // closest distance to the corner
   };
@@ -122,7 +122,7 @@ class CornerSmoothing final : public ElementSink {
   double g64_corner_velocity(const PathElement& a, const geometry::Vec3& u1, const geometry::Vec3& u2) const;
   double programmed_velocity(const PathElement& e, const geometry::Vec3& u) const;
   // The lowest velocity the rounding's curvature allows (centripetal, SOFT curvature jerk).
-  double rounding_velocity(const geometry::Curve& curve, const PathElement& a) const;
+  double rounding_velocity(const geometry::PolynomialSpan& curve, const PathElement& a) const;
   void emit_pending();
 
   ElementSink& next_;
