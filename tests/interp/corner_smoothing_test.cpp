@@ -215,6 +215,24 @@ TEST(CornerSmoothing, CtolAndAtolOverrideTheDataAndNegativeRestoresThem) {
   EXPECT_NEAR(a.out[2].smoothing_deviation_mm, 0.01 * std::sqrt(2.0), 1e-12);  // d = 0.04
 }
 
+TEST(CornerSmoothing, ToleranceWordsAreModelledAndOnlyOtolAndG644Warn) {
+  const auto run = testing::run_program(
+      "G0 X0 Y0 Z0\nCTOL=0.01 ATOL[X]=0.02 ATOL[Y]=-1 ADIS=0.5 ADISPOS=1\nOTOL=0.1\nG644 G1 X1 F1000\nM30\n");
+  ASSERT_FALSE(run->alarm);
+  std::vector<std::string> warned;
+  for (const auto& a : run->diagnostics.items()) warned.push_back(a.text);
+  ASSERT_EQ(warned.size(), 2u);
+  EXPECT_NE(warned[0].find("OTOL"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[1].find("G644"), std::string::npos) << warned[1];
+  const auto& e = run->sink.motions().back();
+  EXPECT_DOUBLE_EQ(e.smoothing.ctol_mm, 0.01);
+  EXPECT_DOUBLE_EQ(e.smoothing.atol_mm[0], 0.02);
+  EXPECT_DOUBLE_EQ(e.smoothing.atol_mm[1], -1.0);
+  EXPECT_DOUBLE_EQ(e.smoothing.adis_mm, 0.5);
+  EXPECT_DOUBLE_EQ(e.smoothing.adispos_mm, 1.0);
+  EXPECT_EQ(e.smoothing.code, 644);
+}
+
 TEST(CornerSmoothing, G0UsesAdisposAndTheToleranceFactor) {
   auto p = contour_profile(0.05);
   auto r = smoothed("G0 X0 Y0 Z0\nG642\nX50\nY50\nM30\n", p);
