@@ -162,14 +162,11 @@ void Planner::note_block_start(const BlockRef& source) {
   block_line_ = source.line;
 }
 
-void Planner::append_motion(interp::PathElement element) {
-  WindowElement& w = elements_.emplace_back();
-  w.element = std::move(element);
+// Fills stations_ for the element (see append_motion); returns whether its segments are timed
+// along the ramp envelope, and their grid.
+bool Planner::discretise(const WindowElement& w, double length, double& grid) {
   const geometry::Curve& curve = *w.element.curve;
-  const double length = w.element.path_length();
-  w.dynamics = make_element_dynamics(w.element, length, profile_);
   const ElementDynamics& dyn = w.dynamics;
-
   auto bound_at = [&](const CurvePoint& p) {
     VelocityBound b;
     for (const auto& c : point_constraints_) b.tighten(c->max_velocity(dyn, p), c->limit());
@@ -177,11 +174,8 @@ void Planner::append_motion(interp::PathElement element) {
     return b;
   };
 
-  // Discretise: lines have constant limits, curves get nodes where their limits vary
-  // (element_discretisation.hpp).
   std::vector<Station>& stations = stations_;
   bool envelope = false;
-  double grid = 0;
   if (w.element.kind == interp::ElementKind::Line) {
     stations.resize(2);
     stations[0].s = 0.0;
@@ -218,6 +212,21 @@ void Planner::append_motion(interp::PathElement element) {
     envelope = discretise_element(along, length, fine_step, rule, limits_at, stations);
     grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
   }
+  return envelope;
+}
+
+void Planner::append_motion(interp::PathElement element) {
+  WindowElement& w = elements_.emplace_back();
+  w.element = std::move(element);
+  const double length = w.element.path_length();
+  w.dynamics = make_element_dynamics(w.element, length, profile_);
+  const ElementDynamics& dyn = w.dynamics;
+
+  // Discretise: lines have constant limits, curves get nodes where their limits vary
+  // (element_discretisation.hpp).
+  std::vector<Station>& stations = stations_;
+  double grid = 0;
+  const bool envelope = discretise(w, length, grid);
   const size_t n = stations.size() - 1;
   const CurvePoint& start = stations[0].point;
   const VelocityBound start_bound = stations[0].bound;

@@ -176,6 +176,7 @@ class Planner : public interp::ElementSink {
   };
 
   void append_motion(interp::PathElement element);
+  bool discretise(const WindowElement& w, double length, double& grid);
   void append_passive(interp::PathElement element);
   void append_positioning(interp::PathElement element);
   // The run clock when the block of the element being committed started (POS/POSA timing).
