@@ -101,7 +101,10 @@
 //    segments, each with the lower limits of its ends (step 1's "not longer than h" rule would
 //    give a short rounding the limits of its ends only, and the sampled refinement follows its
 //    fast-changing curvature into hundreds of pieces: 2.3x the CPU time on a COMPCAD raster).
-//    Its middle, where a symmetric rounding's curvature peaks, is a node.
+//    Its middle, where a symmetric rounding's curvature peaks, is a node. A quadratic rounding
+//    (G641..G643) gets its 8 stations at equal parameter steps instead, with their arc length
+//    from a 5-node Gauss rule per step (no arc-length inversion; its speed varies by at most
+//    1/cos(θ/2), so the steps stay within that ratio of equal lengths).
 //    The junctions are tangent-continuous, so the G64 corner rule gives no limit there; under
 //    SOFT the curvature step of a quadratic rounding (0 on the line, sin θ/(2d) on the
 //    rounding) meets the curvature-step rule of step 2 (G645's cubic has none). The rounding is

@@ -148,7 +148,9 @@ TEST(CornerSmoothing, RandomPolylinesStayInTheBandAndTangentContinuous) {
       if (r.out[i].smoothing_deviation_mm >= 0 || r.out[i - 1].smoothing_deviation_mm >= 0) {
         EXPECT_LT((c.at(0).tangent - prev.at(prev.length()).tangent).norm(), 1e-9) << "tangent at " << i;
         // G645: curvature-continuous too, the rounding starts and ends straight.
-        if (g645) EXPECT_LT(c.at(0).curvature + prev.at(prev.length()).curvature, 1e-6) << "curvature at " << i;
+        if (g645) {
+          EXPECT_LT(c.at(0).curvature + prev.at(prev.length()).curvature, 1e-6) << "curvature at " << i;
+        }
       }
     }
     // Not every corner: a rounding shorter than one IPO cycle's path (sharp turns, small
@@ -310,7 +312,9 @@ TEST(CornerSmoothingCurves, LineIntoArcIsRoundedWithinTheContourTolerance) {
     }
     const auto& prev = *m[i - 1].curve;
     EXPECT_LT((c.start() - prev.end()).norm(), 1e-9);
-    if (i >= 2) EXPECT_LT((c.at(0).tangent - prev.at(prev.length()).tangent).norm(), 1e-9) << i;
+    if (i >= 2) {
+      EXPECT_LT((c.at(0).tangent - prev.at(prev.length()).tangent).norm(), 1e-9) << i;
+    }
   }
 }
 

@@ -72,7 +72,9 @@ TEST(CornerSmoothingPlanner, SquareUnderG642IsFasterAndItsCornerFeedIsTheCentrip
   EXPECT_LT(g642->summary.time_s, g64->summary.time_s - 0.005);
   // G64: the 90-degree corner at the end of X20 (line 3) allows 5000 * 0.2 * 0.004 / 1 = 4 mm/s.
   for (const auto& b : g64->rec.blocks)
-    if (b.source.line == 3) EXPECT_NEAR(b.v_min_mm_s, 4.0, 1e-9);
+    if (b.source.line == 3) {
+      EXPECT_NEAR(b.v_min_mm_s, 4.0, 1e-9);
+    }
   size_t rounded = 0;
   const double expected = centripetal_limit_by_hand(0.75, 5000);
   for (const auto& b : g642->rec.blocks) {
