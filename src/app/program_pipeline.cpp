@@ -7,6 +7,7 @@
 #include "interp/controller_state_view.hpp"
 #include "app/standard_cycles.hpp"
 #include "interp/block_compressor.hpp"
+#include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "machine/tool_table_file.hpp"
@@ -105,7 +106,8 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
 PipelineOutcome run_program_tool_centre(const ProgramOptions& options, const machine::MachineProfile& profile,
                                         interp::ElementSink& sink) {
   Diagnostics compensation_diagnostics;
-  interp::BlockCompressor compressor(sink, profile);
+  interp::CornerSmoothing smoothing(sink, profile);
+  interp::BlockCompressor compressor(smoothing, profile);
   interp::CutterCompensation compensation(compressor, profile, compensation_diagnostics);
   PipelineOutcome outcome = run_program(options, profile, compensation);
   for (const auto& a : compensation_diagnostics.items()) outcome.diagnostics.report(a);

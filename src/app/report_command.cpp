@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
 #include "interp/block_compressor.hpp"
+#include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "motion/planner.hpp"
 #include "parser/program_files.hpp"
@@ -55,7 +56,8 @@ ReportRun run_for_report(const ProgramOptions& options, const machine::MachinePr
   ReportRun run;
   {
     Diagnostics compensation_diagnostics;
-    interp::BlockCompressor compressor(tool_centre, profile);
+    interp::CornerSmoothing smoothing(tool_centre, profile);
+    interp::BlockCompressor compressor(smoothing, profile);
     interp::CutterCompensation compensation(compressor, profile, compensation_diagnostics);
     report::ElementTap programmed(compensation, [&](const interp::PathElement& e) { collector.on_programmed(e); });
     run.outcome = run_program(options, profile, programmed);

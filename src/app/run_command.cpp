@@ -82,13 +82,23 @@ void print_summary(std::FILE* out, const RunOptions& o, const machine::MachinePr
 struct CompressionTally {
   uint64_t elements = 0, blocks = 0;
   double max_deviation_mm = 0;
+  // Corner smoothing G641..G645 (docs/smoothing.md): rounded corners and their largest deviation.
+  uint64_t corners = 0;
+  double max_corner_deviation_mm = 0;
   void add(const interp::PathElement& e) {
+    if (e.smoothing_deviation_mm >= 0) {
+      ++corners;
+      max_corner_deviation_mm = std::max(max_corner_deviation_mm, e.smoothing_deviation_mm);
+    }
     if (e.compressed_blocks == 0) return;
     ++elements;
     blocks += e.compressed_blocks;
     max_deviation_mm = std::max(max_deviation_mm, e.compress_deviation_mm);
   }
   void print(std::FILE* out) const {
+    if (corners > 0)
+      std::fprintf(out, "  corner smoothing   %llu corners rounded, deviation from the corner <= %.4f mm\n",
+                   static_cast<unsigned long long>(corners), max_corner_deviation_mm);
     if (elements == 0) return;
     std::fprintf(out, "  compressor         %llu blocks into %llu elements, deviation <= %.4f mm\n",
                  static_cast<unsigned long long>(blocks), static_cast<unsigned long long>(elements), max_deviation_mm);

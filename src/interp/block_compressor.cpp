@@ -65,6 +65,7 @@ void BlockCompressor::start_run(const PathElement& e) {
   run_mode_ = e.compressor;
   run_feed_mm_s_ = e.feed_mm_s;
   run_feed_scale_ = e.feed_scale;
+  run_tolerances_ = e.smoothing;
   run_dynamics_ = e.dynamics;
 }
 
@@ -99,7 +100,13 @@ void BlockCompressor::flush(bool carry) {
     return;
   }
   spans_.clear();
-  spans_ = geometry::fit_compressed_run(points_, fit_options(profile_, run_mode_), start_tangent_);
+  geometry::CompressorFitOptions options = fit_options(profile_, run_mode_);
+  // CTOL= / ATOL[ax]= of the program replace the contour / axis tolerances (PGA "CTOL, OTOL,
+  // ATOL"); a block that programs them is not simple, so a run shares its first block's.
+  if (run_tolerances_.ctol_mm > 0) options.contour_tol_mm = run_tolerances_.ctol_mm;
+  for (int i = 0; i < 3; ++i)
+    if (run_tolerances_.atol_mm[i] > 0) options.axis_tol_mm[i] = run_tolerances_.atol_mm[i];
+  spans_ = geometry::fit_compressed_run(points_, options, start_tangent_);
   size_t next_element = 0;
   for (const geometry::FittedSpan& span : spans_) {
     const size_t begin = next_element;

@@ -55,6 +55,7 @@ class BlockCompressor final : public ElementSink {
   double run_feed_mm_s_ = 0.0;
   double run_feed_scale_ = 1.0;
   DynamicsMode run_dynamics_;
+  SmoothingRequest run_tolerances_;  // CTOL/ATOL of the run's first block
   std::vector<geometry::FittedSpan> spans_;  // reused
 };
 

@@ -123,7 +123,11 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       case 500: case 54: case 55: case 56: case 57: select_settable_frame(ctx, code, g.column); continue;
       case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
       case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
-      case 644: state_.transition = TransitionMode::SmoothTolerance; continue;
+      case 644:
+        // Rounding with the axes' largest dynamics: no rounding element modelled, planned as G64.
+        state_.apply_code("G644");
+        warn_once(ctx, "G644 (smoothing with maximum dynamics: planned as G64)", g.column);
+        continue;
       default:
         if (settable_frame_index(code) >= 0) {
           select_settable_frame(ctx, code, g.column);
@@ -189,6 +193,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string_view n = a.name;  // compared with literals inline, without strlen
+    if (apply_smoothing_address(ctx, a)) continue;
     if (n == "F") {
       if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
       // F has a resolution of 0.001: a smaller value is zero on the control (and would make
@@ -263,6 +268,35 @@ int Interpreter::numbered_spindle(std::string_view name) {
     n = n * 10 + (name[i] - '0');
   }
   return n;
+}
+
+// ADIS=, ADISPOS= (G641 and MD20480 digit 4), CTOL=, ATOL[ax]= (G642..G645 and the compressor):
+// modal; a negative tolerance restores the machine/setting data value (PGA "CTOL, OTOL, ATOL").
+bool Interpreter::apply_smoothing_address(BlockContext& ctx, const AddressWord& a) {
+  const std::string_view n = a.name;
+  SmoothingRequest& s = state_.smoothing;
+  if (n == "ADIS" || n == "ADISPOS") {
+    double v = a.value * geometry_unit();
+    if (v < 0) {
+      warn_once(ctx, std::string(n) + " < 0 (taken as 0)", a.column);
+      v = 0;
+    }
+    (n == "ADIS" ? s.adis_mm : s.adispos_mm) = v;
+    return true;
+  }
+  if (n == "CTOL") {
+    s.ctol_mm = a.value < 0 ? -1.0 : a.value * geometry_unit();
+    return true;
+  }
+  if (!n.starts_with("ATOL[")) return false;
+  const std::string axis(n.substr(5, n.size() - 6));
+  const int i = axis_index(axis);
+  if (i < 0) {
+    warn_once(ctx, "ATOL[" + axis + "] (tolerance of an axis drycut does not smooth)", a.column);
+    return true;
+  }
+  s.atol_mm[i] = a.value < 0 ? -1.0 : a.value * geometry_unit();
+  return true;
 }
 
 void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_t column) {
@@ -367,6 +401,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.kind = kind;
   e.source = ctx.ref();
   e.dynamics.transition = state_.transition;
+  e.smoothing = state_.smoothing;
   e.dynamics.profile = state_.accel;
   e.dynamics.group = state_.dynamic_group;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;

@@ -80,6 +80,7 @@ class Interpreter {
   void apply_g_words(BlockContext& ctx);
   void apply_commands(BlockContext& ctx);
   void apply_addresses(BlockContext& ctx);
+  bool apply_smoothing_address(BlockContext& ctx, const parser::AddressWord& a);
   void apply_m_words(BlockContext& ctx);
   // Extra axes and positioning axes (interpreter_axes.cpp, docs/axes.md).
   bool note_extra_axis_word(BlockContext& ctx, const parser::AddressWord& word);

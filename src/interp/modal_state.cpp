@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 59> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 60> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -38,12 +38,13 @@ constexpr std::array<std::pair<std::string_view, Setter>, 59> kCodes{{
     {"G35", [](ModalState& s) { s.motion = MotionMode::ThreadDecreasing; }},
     {"G331", [](ModalState& s) { s.motion = MotionMode::Tapping; }},
     {"G332", [](ModalState& s) { s.motion = MotionMode::TappingRetract; }},
-    {"G60", [](ModalState& s) { s.transition = TransitionMode::ExactStop; }},
-    {"G64", [](ModalState& s) { s.transition = TransitionMode::Continuous; }},
-    {"G641", [](ModalState& s) { s.transition = TransitionMode::SmoothDistance; }},
-    {"G642", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; }},
-    {"G643", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; }},
-    {"G645", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; }},
+    {"G60", [](ModalState& s) { s.transition = TransitionMode::ExactStop; s.smoothing.code = 0; }},
+    {"G64", [](ModalState& s) { s.transition = TransitionMode::Continuous; s.smoothing.code = 0; }},
+    {"G641", [](ModalState& s) { s.transition = TransitionMode::SmoothDistance; s.smoothing.code = 641; }},
+    {"G642", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; s.smoothing.code = 642; }},
+    {"G643", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; s.smoothing.code = 643; }},
+    {"G644", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; s.smoothing.code = 644; }},
+    {"G645", [](ModalState& s) { s.transition = TransitionMode::SmoothTolerance; s.smoothing.code = 645; }},
     {"BRISK", [](ModalState& s) { s.accel = AccelProfile::Brisk; }},
     {"SOFT", [](ModalState& s) { s.accel = AccelProfile::Soft; }},
     {"BNAT", [](ModalState& s) { s.spline_begin = SplineCondition::Natural; }},

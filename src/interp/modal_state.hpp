@@ -50,6 +50,7 @@ struct ModalState {
   double spindle_rpm = 0.0;
   SpindleState spindle = SpindleState::Stopped;
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
+  SmoothingRequest smoothing;  // G641..G645 and ADIS/ADISPOS/CTOL/ATOL (corner_smoothing.hpp)
   AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
   machine::DynamicGroup dynamic_group = machine::DynamicGroup::Norm;  // DYNNORM ... DYNPREC
   SplineCondition spline_begin = SplineCondition::Natural;

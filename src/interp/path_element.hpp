@@ -29,8 +29,19 @@ enum class ElementKind {
 enum class TransitionMode {
   ExactStop,   // G60, or G9 in this block: decelerate to rest at the block end
   Continuous,  // G64
-  SmoothDistance,   // G641 (treated as G64 by the planner until smoothing is modelled)
-  SmoothTolerance,  // G642/G643/G645 (likewise)
+  SmoothDistance,   // G641: rounding by distance ADIS/ADISPOS (src/interp/corner_smoothing.hpp)
+  SmoothTolerance,  // G642/G643/G644/G645: rounding within tolerances (G644: as G64, not modelled)
+};
+
+// Which G code of group 10 selected the smoothing (0: none, else 641 ... 645) and the program's
+// smoothing settings at the block (docs/smoothing.md). A negative tolerance means "not
+// programmed": the machine/setting data value applies (CTOL=-1 restores it, so does reset).
+struct SmoothingRequest {
+  int code = 0;                  // 641, 642, 643, 644, 645; 0 under G60/G64
+  double adis_mm = 0.0;          // ADIS= (path blocks), 0 = not programmed: G641 behaves as G64
+  double adispos_mm = 0.0;       // ADISPOS= (G0 blocks)
+  double ctol_mm = -1.0;         // CTOL= contour tolerance, < 0: SD42465 (smoothing) / SD42475 (compressor)
+  double atol_mm[3] = {-1.0, -1.0, -1.0};  // ATOL[X/Y/Z]= axis tolerances, < 0: MD33100
 };
 
 enum class AccelProfile { Brisk, Soft };
@@ -122,6 +133,13 @@ struct PathElement {
   // compressed element) and how far it strays from their programmed end points and lines (mm).
   uint32_t compressed_blocks = 0;
   double compress_deviation_mm = 0.0;
+  // Corner smoothing (src/interp/corner_smoothing.hpp): the program's settings for the block,
+  // and on the output: an inserted smoothing element has smoothing_deviation_mm >= 0 (its
+  // closest distance to the programmed corner it rounds); a neighbour the stage trimmed keeps
+  // the length of its programmed block for the short-block rule (0: its own length).
+  SmoothingRequest smoothing;
+  double smoothing_deviation_mm = -1.0;
+  double block_length_mm = 0.0;
 
   // The length the path feed F refers to and the planner plans along (FGROUP, PGA Fundamentals
   // "Feedrate (G93, G94, G95, F, FGROUP)"): the geometry's length if the geometry axes are in the

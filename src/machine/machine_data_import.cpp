@@ -422,6 +422,21 @@ class Importer {
               "SD42475 COMPRESS_CONTUR_TOL", "0.05 mm");
     map_value("compressor.crit_spline_angle_deg", {"$SC_CRIT_SPLINE_ANGLE"}, 1.0, c.crit_spline_angle_deg,
               "SD42470 CRIT_SPLINE_ANGLE", "36 deg");
+    // Corner smoothing (docs/smoothing.md).
+    SmoothingData& sm = p.smoothing;
+    map_int("smoothing.smoothing_mode", {"$MC_SMOOTHING_MODE"}, sm.mode, "MD20480 SMOOTHING_MODE");
+    map_value("smoothing.smooth_contur_tol_mm", {"$SC_SMOOTH_CONTUR_TOL"}, 1.0, sm.contur_tol_mm,
+              "SD42465 SMOOTH_CONTUR_TOL", "0.05 mm");
+    map_value("smoothing.g0_tolerance_factor", {"$MC_G0_TOLERANCE_FACTOR"}, 1.0, sm.g0_tolerance_factor,
+              "MD20560 G0_TOLERANCE_FACTOR", "3");
+    int ignore_ovl = sm.ignore_ovl_factor ? 1 : 0;
+    map_int("smoothing.ignore_ovl_factor_for_adis", {"$MC_IGNORE_OVL_FACTOR_FOR_ADIS"}, ignore_ovl,
+            "MD20490 IGNORE_OVL_FACTOR_FOR_ADIS");
+    sm.ignore_ovl_factor = ignore_ovl != 0;
+    map_value("smoothing.smooth_ori_tol_deg", {"$SC_SMOOTH_ORI_TOL"}, 1.0, sm.ori_tol_deg, "SD42466 SMOOTH_ORI_TOL",
+              "0.05 deg");
+    map_int("smoothing.mm_max_axispoly_per_block", {"$MC_MM_MAX_AXISPOLY_PER_BLOCK"}, sm.max_axispoly_per_block,
+            "MD28520 MM_MAX_AXISPOLY_PER_BLOCK");
     map_int("program.cutcom_maxnum_check_blocks", {"$MC_CUTCOM_MAXNUM_CHECK_BLOCKS"}, p.cutcom_maxnum_check_blocks,
             "MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS");
     map_int("program.cutcom_maxnum_dummy_blocks", {"$MC_CUTCOM_MAXNUM_DUMMY_BLOCKS"}, p.cutcom_maxnum_dummy_blocks,

@@ -26,6 +26,12 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MC_COMPRESSOR_MODE"] = p.compressor.mode;                           // MD20482
   md["$SC_COMPRESS_CONTUR_TOL"] = p.compressor.contur_tol_mm;              // SD42475
   md["$SC_CRIT_SPLINE_ANGLE"] = p.compressor.crit_spline_angle_deg;        // SD42470
+  md["$MC_SMOOTHING_MODE"] = p.smoothing.mode;                             // MD20480
+  md["$SC_SMOOTH_CONTUR_TOL"] = p.smoothing.contur_tol_mm;                 // SD42465
+  md["$SC_SMOOTH_ORI_TOL"] = p.smoothing.ori_tol_deg;                      // SD42466
+  md["$MC_IGNORE_OVL_FACTOR_FOR_ADIS"] = p.smoothing.ignore_ovl_factor ? 1 : 0;  // MD20490
+  md["$MC_G0_TOLERANCE_FACTOR"] = p.smoothing.g0_tolerance_factor;         // MD20560
+  md["$MC_MM_MAX_AXISPOLY_PER_BLOCK"] = p.smoothing.max_axispoly_per_block;  // MD28520
   for (const AxisData& a : p.axes) {
     for (const std::string& axis : {a.name + "1", a.name}) {
       md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * 60.0;        // MD32000

@@ -218,6 +218,7 @@ MachineProfile load_profile_json(const std::string& json_text, const std::string
     }
     if (const json* program = r.child("program")) read_program(*program, p);
     if (const json* compressor = r.child("compressor")) read_compressor(*compressor, p);
+    if (const json* smoothing = r.child("smoothing")) read_smoothing(*smoothing, p);
     if (const json* tools = r.child("tools")) read_tools(*tools, p);
     if (const json* md = r.child("machine_data")) read_machine_data(*md, p);
     if (const json* groups = r.child("dynamic_groups")) read_dynamic_groups(*groups, p.dynamic_groups);
@@ -315,6 +316,7 @@ std::string profile_to_json(const MachineProfile& p) {
     tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});
   }
   root["compressor"] = compressor_to_json(p);
+  root["smoothing"] = smoothing_to_json(p);
   root["tools"] = tools;
   if (!p.machine_data.empty()) root["machine_data"] = p.machine_data;
   if (auto groups = dynamic_groups_to_json(p.dynamic_groups); !groups.empty()) root["dynamic_groups"] = groups;

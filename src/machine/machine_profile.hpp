@@ -46,6 +46,22 @@ struct CompressorData {
   int flush_points = 1000;               // drycut: a run is fitted and handed on every this many points
 };
 
+// Corner smoothing G641/G642/G643/G645 (docs/smoothing.md): channel machine and setting data,
+// plus drycut's own choices (named as such). The per-axis tolerance is MD33100 (AxisData).
+struct SmoothingData {
+  // MD20480 SMOOTHING_MODE: units digit G643, tens digit G642/G645; 0 axis tolerances MD33100,
+  // 1 contour tolerance SD42465, 2 orientation tolerance (geometry axes: MD33100 here),
+  // 3 contour and orientation, 4 the distances ADIS/ADISPOS. Higher digits are not modelled.
+  int mode = 0;
+  double contur_tol_mm = 0.05;              // SD42465 SMOOTH_CONTUR_TOL
+  double ori_tol_deg = 0.05;                // SD42466 SMOOTH_ORI_TOL (orientation: not modelled)
+  bool ignore_ovl_factor = false;           // MD20490 IGNORE_OVL_FACTOR_FOR_ADIS
+  double g0_tolerance_factor = 3.0;         // MD20560 G0_TOLERANCE_FACTOR (G0 blocks: tolerance × this)
+  int max_axispoly_per_block = 3;           // MD28520 MM_MAX_AXISPOLY_PER_BLOCK (< 3: no G642..G645 rounding)
+  double max_block_share = 0.5;             // drycut: the rounding takes at most this share of each neighbour
+  double adis_max_reduction = 0.36;         // PGA: ADIS is shortened by up to 36 % on short blocks; more: as G64
+};
+
 struct ToolEdge {
   int d = 1;               // D number
   double radius_mm = 0;    // cutter radius (tool radius compensation)
@@ -109,6 +125,7 @@ struct MachineProfile {
   int cutcom_maxnum_dummy_blocks = 3;           // MD20250
   double cutcom_decel_limit = 0.0;              // SD42528: lowest tool-centre feed share on inside curves (CFC)
   CompressorData compressor;                    // COMPON/COMPCURV/COMPCAD (JSON object "compressor")
+  SmoothingData smoothing;                      // G641/G642/G643/G645 (JSON object "smoothing")
 
   // Further machine/setting data, inputs and PLC data by their `$` name as programs read them
   // ("$MN_SCALING_SYSTEM_IS_METRIC", "$MA_COMPRESS_POS_TOL[X1]", "$A_IN[3]"). The fields above

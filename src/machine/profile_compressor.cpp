@@ -47,4 +47,45 @@ json compressor_to_json(const MachineProfile& p) {
           {"flush_points", c.flush_points}};
 }
 
+void read_smoothing(const json& node, MachineProfile& p) {
+  ProfileObjectReader r(node, "smoothing");
+  SmoothingData& c = p.smoothing;
+  if (auto v = r.integer("smoothing_mode")) {
+    // Units digit (G643) and tens digit (G642/G645) 0..4; the higher digits (velocity in the
+    // rounding block, G644, special settings) are accepted and not modelled.
+    const long long m = *v;
+    if (m < 0 || m > 99999 || m % 10 > 4 || m / 10 % 10 > 4)
+      r.fail("smoothing_mode", "must be a MD20480 value: units and tens digit 0..4");
+    c.mode = static_cast<int>(m);
+  }
+  if (auto v = r.quantity("smooth_contur_tol", Dimension::Length))
+    c.contur_tol_mm = require_positive(*v, r.key_path("smooth_contur_tol"));
+  if (auto v = r.quantity("smooth_ori_tol", Dimension::Angle))
+    c.ori_tol_deg = require_positive(*v, r.key_path("smooth_ori_tol"));
+  if (auto v = r.boolean("ignore_ovl_factor_for_adis")) c.ignore_ovl_factor = *v;
+  if (auto v = r.number("g0_tolerance_factor"))
+    c.g0_tolerance_factor = require_range(*v, 1.0, 1000.0, r.key_path("g0_tolerance_factor"));
+  if (auto v = r.integer("mm_max_axispoly_per_block")) {
+    if (*v < 0 || *v > 100) r.fail("mm_max_axispoly_per_block", "must be in [0, 100]");
+    c.max_axispoly_per_block = static_cast<int>(*v);
+  }
+  if (auto v = r.number("max_block_share"))
+    c.max_block_share = require_range(*v, 0.01, 0.5, r.key_path("max_block_share"));
+  if (auto v = r.number("adis_max_reduction"))
+    c.adis_max_reduction = require_range(*v, 0.0, 1.0, r.key_path("adis_max_reduction"));
+  r.reject_unknown_keys();
+}
+
+json smoothing_to_json(const MachineProfile& p) {
+  const SmoothingData& c = p.smoothing;
+  return {{"smoothing_mode", c.mode},
+          {"smooth_contur_tol_mm", c.contur_tol_mm},
+          {"smooth_ori_tol_deg", c.ori_tol_deg},
+          {"ignore_ovl_factor_for_adis", c.ignore_ovl_factor},
+          {"g0_tolerance_factor", c.g0_tolerance_factor},
+          {"mm_max_axispoly_per_block", c.max_axispoly_per_block},
+          {"max_block_share", c.max_block_share},
+          {"adis_max_reduction", c.adis_max_reduction}};
+}
+
 }  // namespace drycut::machine

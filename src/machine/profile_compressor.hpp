@@ -13,4 +13,8 @@ void read_compressor(const nlohmann::json& node, MachineProfile& profile);
 // The object in canonical units (read_compressor reads it back unchanged).
 nlohmann::json compressor_to_json(const MachineProfile& profile);
 
+// The `smoothing` object: corner smoothing G641/G642/G643/G645 (docs/smoothing.md).
+void read_smoothing(const nlohmann::json& node, MachineProfile& profile);
+nlohmann::json smoothing_to_json(const MachineProfile& profile);
+
 }  // namespace drycut::machine

@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 55> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 63> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -66,6 +66,14 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 55> kNames{{
     {"crit_spline_angle", "SD42470 CRIT_SPLINE_ANGLE"},
     {"max_blocks_per_span", "- (FB1: COMPON/COMPCURV join up to 10 blocks)"},
     {"flush_points", "- (drycut: compressor run window)"},
+    {"smoothing_mode", "MD20480 SMOOTHING_MODE"},
+    {"smooth_contur_tol", "SD42465 SMOOTH_CONTUR_TOL"},
+    {"smooth_ori_tol", "SD42466 SMOOTH_ORI_TOL"},
+    {"ignore_ovl_factor_for_adis", "MD20490 IGNORE_OVL_FACTOR_FOR_ADIS"},
+    {"g0_tolerance_factor", "MD20560 G0_TOLERANCE_FACTOR"},
+    {"mm_max_axispoly_per_block", "MD28520 MM_MAX_AXISPOLY_PER_BLOCK"},
+    {"max_block_share", "- (drycut: share of a block the corner rounding may take)"},
+    {"adis_max_reduction", "- (PGA: ADIS shortened by up to 36 % on short blocks)"},
 }};
 
 // Unit suffixes written by profile_to_json, longest first.

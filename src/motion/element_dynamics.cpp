@@ -32,7 +32,10 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   d.centripetal_share = profile.curv_effect_on_path_accel;
   d.ipo_cycle = profile.ipo_cycle_s;
   d.short_block_factor = profile.short_block_factor;
-  d.inserted = element.inserted;
+  // A corner-smoothing rounding is an inserted block the interpolator runs as a block of its
+  // own: the short-block rule applies to it (FB1: "each block requires at least one IPO cycle").
+  d.inserted = element.inserted && element.smoothing_deviation_mm < 0;
+  d.block_length = element.block_length_mm > 0 ? element.block_length_mm : length;
   d.ovl_factor = profile.max_accel_ovl_factor;
   if (!element.extra_axes.empty() && length > 0) {
     d.geometry_scale = element.curve ? element.curve->length() / length : 0.0;

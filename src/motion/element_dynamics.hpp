@@ -41,6 +41,9 @@ struct ElementDynamics {
   double ipo_cycle = 0;
   double short_block_factor = 0;
   bool inserted = false;          // control-inserted element: no short-block limit
+  // The length the short-block rule sees: the programmed block's (a neighbour the corner
+  // smoothing trimmed is still one block on the control), else `length`.
+  double block_length = 0;
   double ovl_factor = 1;
   // Extra axes: the geometry's arc length per unit of path length (1 unless extra axes count in
   // the path length, FGROUP) and each moving extra axis.

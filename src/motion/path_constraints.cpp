@@ -75,7 +75,7 @@ double CurvatureJerkConstraint::max_velocity(const ElementDynamics& d, const Cur
 
 double ShortBlockConstraint::max_velocity(const ElementDynamics& d, const CurvePoint&) const {
   if (d.inserted) return std::numeric_limits<double>::infinity();
-  return d.short_block_factor * d.length / d.ipo_cycle;
+  return d.short_block_factor * d.block_length / d.ipo_cycle;
 }
 
 bool ends_in_exact_stop(const interp::PathElement& e) {

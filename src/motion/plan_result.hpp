@@ -28,6 +28,9 @@ struct BlockTiming {
   // it strays from their programmed points and lines (interp::PathElement).
   uint32_t compressed_blocks = 0;
   double compress_deviation_mm = 0;
+  // A corner-smoothing element (G641/G642/G643/G645): its closest distance to the programmed
+  // corner it rounds; < 0 for every other element.
+  double smoothing_deviation_mm = -1;
 };
 
 struct TrajectorySample {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "interp/geometry/polynomial_span.hpp"
 #include "machine/alarm.hpp"
 
 namespace drycut::motion {
@@ -162,14 +163,37 @@ void Planner::note_block_start(const BlockRef& source) {
   block_line_ = source.line;
 }
 
-void Planner::append_motion(interp::PathElement element) {
-  WindowElement& w = elements_.emplace_back();
-  w.element = std::move(element);
-  const geometry::Curve& curve = *w.element.curve;
-  const double length = w.element.path_length();
-  w.dynamics = make_element_dynamics(w.element, length, profile_);
-  const ElementDynamics& dyn = w.dynamics;
+namespace {
 
+// 8 equal parameter steps of a corner rounding (step 8 of planner.hpp), each segment with the
+// lower limits of its ends, as the equal segments of element_discretisation.hpp.
+template <typename LimitsAt>
+void rounding_stations(const geometry::PolynomialSpan& span, double length, const LimitsAt& limits_at,
+                       std::vector<Station>& out) {
+  out.clear();
+  const double u_end = span.parameter_end();
+  double s = 0.0;
+  for (int k = 0; k <= 8; ++k) {
+    const double u = u_end * k / 8.0;
+    if (k > 0) s = k == 8 ? length : s + span.arc_length_between(u_end * (k - 1) / 8.0, u);
+    Station st = limits_at(geometry::PolynomialSpan::by_arc_length(span.derivatives(u)));
+    st.s = s;
+    if (k > 0) {
+      const Station& prev = out.back();
+      st.piece_bound = prev.bound.velocity <= st.bound.velocity ? prev.bound : st.bound;
+      st.piece_ramp = {std::min(prev.ramp.accel, st.ramp.accel), std::min(prev.ramp.jerk, st.ramp.jerk)};
+    }
+    out.push_back(std::move(st));
+  }
+}
+
+}  // namespace
+
+// Fills stations_ for the element (see append_motion); returns whether its segments are timed
+// along the ramp envelope, and their grid.
+bool Planner::discretise(const WindowElement& w, double length, double& grid) {
+  const geometry::Curve& curve = *w.element.curve;
+  const ElementDynamics& dyn = w.dynamics;
   auto bound_at = [&](const CurvePoint& p) {
     VelocityBound b;
     for (const auto& c : point_constraints_) b.tighten(c->max_velocity(dyn, p), c->limit());
@@ -177,11 +201,8 @@ void Planner::append_motion(interp::PathElement element) {
     return b;
   };
 
-  // Discretise: lines have constant limits, curves get nodes where their limits vary
-  // (element_discretisation.hpp).
   std::vector<Station>& stations = stations_;
   bool envelope = false;
-  double grid = 0;
   if (w.element.kind == interp::ElementKind::Line) {
     stations.resize(2);
     stations[0].s = 0.0;
@@ -203,13 +224,46 @@ void Planner::append_motion(interp::PathElement element) {
     };
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
     const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
+    // A corner-smoothing rounding is curved inside and its curvature changes fast: one up to
+    // 8 h long gets 8 equal segments (its middle, where the curvature peaks, is a node), a
+    // longer one is sampled as any span (step 1 and 8, "Corner smoothing").
+    // The stations of a quadratic rounding (G641..G643: its speed varies by at most
+    // 1/cos(θ/2) over the span) are taken at equal steps of its parameter, without the arc-length
+    // inversion (a third of the planner's work on a program of roundings). G645's cubic, whose
+    // speed varies more, keeps equal arc-length steps.
+    DiscretisationRule rule = discretisation_;
+    if (w.element.smoothing_deviation_mm >= 0 && !rule.equal_segments && length <= 8 * fine_step) {
+      const auto* span = dynamic_cast<const geometry::PolynomialSpan*>(&curve);
+      if (span && dyn.geometry_scale == 1.0 && w.element.smoothing.code != 645) {
+        rounding_stations(*span, length, limits_at, stations);
+        grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
+        return false;
+      }
+      rule.equal_segments = true;
+      rule.fixed_segment_mm = length / 8 * (1 + 1e-12);
+    }
     // With grouped extra axes the path parameter is not the curve's arc length: the discretiser
     // sees the curve through path_point (equal segments then; the arc rule needs an arc).
     const PathParameterCurve scaled(curve, dyn, length);
     const geometry::Curve& along = dyn.geometry_scale == 1.0 ? curve : scaled;
-    envelope = discretise_element(along, length, fine_step, discretisation_, limits_at, stations);
+    envelope = discretise_element(along, length, fine_step, rule, limits_at, stations);
     grid = length / std::clamp(std::ceil(length / fine_step), 1.0, double(kMaxSegmentsPerElement));
   }
+  return envelope;
+}
+
+void Planner::append_motion(interp::PathElement element) {
+  WindowElement& w = elements_.emplace_back();
+  w.element = std::move(element);
+  const double length = w.element.path_length();
+  w.dynamics = make_element_dynamics(w.element, length, profile_);
+  const ElementDynamics& dyn = w.dynamics;
+
+  // Discretise: lines have constant limits, curves get nodes where their limits vary
+  // (element_discretisation.hpp).
+  std::vector<Station>& stations = stations_;
+  double grid = 0;
+  const bool envelope = discretise(w, length, grid);
   const size_t n = stations.size() - 1;
   const CurvePoint& start = stations[0].point;
   const VelocityBound start_bound = stations[0].bound;
@@ -438,6 +492,7 @@ void Planner::commit_front() {
   timing.label = std::move(w.element.label);
   timing.compressed_blocks = w.element.compressed_blocks;
   timing.compress_deviation_mm = w.element.compress_deviation_mm;
+  timing.smoothing_deviation_mm = w.element.smoothing_deviation_mm;
   observer_.on_block(timing);
 
   if (w.segment_count > 0) --motion_in_window_;

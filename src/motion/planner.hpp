@@ -89,6 +89,30 @@
 //    path on their own interpolators (positioning_axes.hpp): POS flushes and waits, POSA starts
 //    when the path reaches its block and is waited for at WAITP, a new programming or M30.
 //
+// 8. Corner smoothing (G641/G642/G643/G645; interp/corner_smoothing.hpp, docs/smoothing.md).
+//    What the control does: it cuts both blocks at a corner and inserts a rounding block, which
+//    the path runs through at the speed its curvature and the axis dynamics allow instead of
+//    the G64 overload-factor corner velocity (FB1 B1 "Continuous-path mode"; the rounding
+//    blocks of G641/G642 run with constant acceleration; each block takes at least one IPO
+//    cycle). What drycut does: the stage before the planner delivers the trimmed lines and the
+//    rounding as a SplineSpan (smoothing_deviation_mm >= 0). The planner times it like any
+//    spline span, by the point constraints of step 2 (centripetal acceleration within
+//    MD20602's share, SOFT curvature jerk), except that one up to 8 h long is cut into 8 equal
+//    segments, each with the lower limits of its ends (step 1's "not longer than h" rule would
+//    give a short rounding the limits of its ends only, and the sampled refinement follows its
+//    fast-changing curvature into hundreds of pieces: 2.3x the CPU time on a COMPCAD raster).
+//    Its middle, where a symmetric rounding's curvature peaks, is a node. A quadratic rounding
+//    (G641..G643) gets its 8 stations at equal parameter steps instead, with their arc length
+//    from a 5-node Gauss rule per step (no arc-length inversion; its speed varies by at most
+//    1/cos(θ/2), so the steps stay within that ratio of equal lengths).
+//    The junctions are tangent-continuous, so the G64 corner rule gives no limit there; under
+//    SOFT the curvature step of a quadratic rounding (0 on the line, sin θ/(2d) on the
+//    rounding) meets the curvature-step rule of step 2 (G645's cubic has none). The rounding is
+//    a block for the short-block rule (its own length), the trimmed lines keep their programmed
+//    block's length for it. *(guess)* The control's own rounding polynomial and its velocity
+//    profile in the rounding block (MD20480 hundreds digit) are not published; drycut's Bezier
+//    shapes are documented in corner_smoothing.hpp.
+//
 // Guarantees (tests/motion/planner_property_test.cpp): on lines every IPO sample keeps each
 // axis velocity and acceleration within 1e-6 of its limit; on arcs the limits hold at the
 // nodes and samples between them stay within 2 %. Jerk is limited inside each closed-form
@@ -155,6 +179,7 @@ class Planner : public interp::ElementSink {
   };
 
   void append_motion(interp::PathElement element);
+  bool discretise(const WindowElement& w, double length, double& grid);
   void append_passive(interp::PathElement element);
   void append_positioning(interp::PathElement element);
   // The run clock when the block of the element being committed started (POS/POSA timing).

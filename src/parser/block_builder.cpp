@@ -3,6 +3,7 @@
 // variable assignments, modelled commands with their arguments, SETAL, and at most one
 // subprogram call (by name, L number or with arguments) with P passes.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iterator>
 #include <tuple>
@@ -156,6 +157,16 @@ class ProgramLoader::BlockBuilder {
     if (axis_word(item)) return;
     if (item.name == "M" && item.index_count == 0) {  // M=QU(8), M=R10: the M function of the value
       add_m(item, 0, item.expr, 0);
+      return;
+    }
+    if (item.name == "ATOL") {
+      // ATOL[X]=0.01: the axis tolerance of the smoothing and the compressor (modal).
+      if (item.index_count != 1) throw LineError(12410, item.column, "ATOL[...] takes one axis");
+      const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+      if (index.kind != ValueKind::Axis && !index.is_text()) throw LineError(12150, item.column, "ATOL[...] needs an axis");
+      std::string axis = index.text;
+      for (char& c : axis) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      address_value("ATOL[" + axis + "]", item);
       return;
     }
     if (!is_address(item.name)) {

@@ -52,8 +52,8 @@ constexpr std::array kCommands{
     CommandEntry{"WAITP", M},   CommandEntry{"WAITS", M},   CommandEntry{"LIMS", N},
     CommandEntry{"PRESETON", N}, CommandEntry{"CPROT", N},  CommandEntry{"ORIRESET", N},
     CommandEntry{"FL", N},      CommandEntry{"ACC", N},     CommandEntry{"JERKLIM", N},
-    CommandEntry{"VELOLIM", N}, CommandEntry{"FGREF", N},   CommandEntry{"CTOL", N},
-    CommandEntry{"OTOL", N},    CommandEntry{"ATOL", N},    CommandEntry{"TOFFON", N},
+    CommandEntry{"VELOLIM", N}, CommandEntry{"FGREF", N},
+    CommandEntry{"OTOL", N},    CommandEntry{"TOFFON", N},
     CommandEntry{"TOFFOF", N},  CommandEntry{"TOFFL", N},   CommandEntry{"TOFF", N},
     CommandEntry{"CUTMOD", N},  CommandEntry{"ORISON", N},  CommandEntry{"ORISOF", N},
     CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", N},
@@ -112,10 +112,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 44> kAddresses{
+constexpr std::array<std::string_view, 46> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
-    "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR"};
+    "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
+    "CTOL", "ATOL"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{

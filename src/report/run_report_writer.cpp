@@ -160,6 +160,10 @@ void RunReportWriter::on_block(const motion::BlockTiming& t) {
     append_json_integer(b, t.compressed_blocks);
     b += lines ? ",\"deviation_mm\":" : ",";
     append_json_number(b, t.compress_deviation_mm, kLengthDecimals);
+  } else if (t.smoothing_deviation_mm >= 0) {
+    // A corner-smoothing element: its closest distance to the corner it rounds (one more column).
+    b += lines ? ",\"smoothing_deviation_mm\":" : ",";
+    append_json_number(b, t.smoothing_deviation_mm, kLengthDecimals);
   }
   b += lines ? "}\n" : "]";
   first_row_ = false;

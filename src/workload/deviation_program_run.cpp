@@ -1,6 +1,7 @@
 #include "workload/deviation_program_run.hpp"
 
 #include "interp/block_compressor.hpp"
+#include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/loader_machine.hpp"
@@ -47,8 +48,10 @@ SampledProgram sample_program(const std::filesystem::path& main_program, const m
   SampledProgram result;
   PathSampler programmed(options.step_mm), tool_centre(options.step_mm);
   Diagnostics compensation_diagnostics;
-  // The cut path as the planner gets it: compensated, then compressed (COMPON/COMPCURV/COMPCAD).
-  interp::BlockCompressor compressor(tool_centre, profile);
+  // The cut path as the planner gets it: compensated, compressed (COMPON/COMPCURV/COMPCAD), then
+  // its corners rounded (G641..G645).
+  interp::CornerSmoothing smoothing(tool_centre, profile);
+  interp::BlockCompressor compressor(smoothing, profile);
   std::optional<interp::CutterCompensation> compensation;
   if (options.tool_centre) compensation.emplace(compressor, profile, compensation_diagnostics);
   TeeSink tee(programmed, compensation ? &*compensation : nullptr, result.compensation_alarm);

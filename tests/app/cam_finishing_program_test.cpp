@@ -100,19 +100,19 @@ TEST(CamFinishingProgram, ChecksAndRunsWithTheHandComputedBlocksAndLength) {
   // lines are not blocks of their own, nor is a line with only unmodelled words.
   //   before the toolpath: G71 (ELSE branch on the metric machine), N30 MSG, N32, N34, N36,
   //     N38, N40, N42 TRANS, N44 AROT, CYCLE832(_TOL,1,1) = CUST_832's G642 SOFT COMPCAD
-  //     FFWON DYNFINISH + its M17 + CYCLE832's M17,
-  //     N48, N50, N52, N54, N56                                                        = 17
+  //     FFWON DYNFINISH + its M17 + CYCLE832's M17, CYCLE832's CTOL=_TOL,
+  //     N48, N50, N52, N54, N56                                                        = 18
   //   the toolpath                                                                     = 13040
   //   after it: N..G0Z, FFWOF COMPOF M5, CYCLE832() = CUST_832's G64 COMPOF DYNNORM + its M17
-  //     + CYCLE832's M17, TRANS, G0 SUPA, MSG(), M30                                    = 9
-  //   (CYCLE832's CTOL=/OTOL= lines carry only words drycut does not model: no block)
+  //     + CYCLE832's M17, CYCLE832's CTOL=-1 OTOL=-1, TRANS, G0 SUPA, MSG(), M30         = 10
+  //   (CTOL= is modelled since corner smoothing, docs/smoothing.md: its lines are blocks)
   const fs::path json = fs::temp_directory_path() / ("drycut_cam_" + std::to_string(::getpid()) + ".json");
   const CliRun check = drycut::testing::run_shell("cd '" + kFolder.string() + "' && " +
                                                   drycut::testing::drycut_command("check MOULD_4711_FINISH.MPF --json") +
                                                   " 2>/dev/null");
   ASSERT_EQ(check.exit_code, 0) << check.out;
   const auto c = nlohmann::json::parse(check.out);
-  EXPECT_EQ(c["blocks_executed"].get<int>(), 17 + 13040 + 9);
+  EXPECT_EQ(c["blocks_executed"].get<int>(), 18 + 13040 + 10);
   EXPECT_FALSE(has_alarm(c["alarms"]));
 
   const CliRun run = drycut::testing::run_in_folder("run", kProgram, "--tools tools.csv -q --json '" + json.string() + "'");
@@ -127,27 +127,32 @@ TEST(CamFinishingProgram, ChecksAndRunsWithTheHandComputedBlocksAndLength) {
 
   // Path length: the generator sums every move in machine coordinates from the start (0,0,100)
   // (G0 SUPA Z280, G0 to the frame's X0 Y0, G0 down with the tool length 90, plunge, toolpath,
-  // G0 Z50, G0 SUPA Z280). drycut plans G642 like G64, and CYCLE832 selects COMPCAD: the
-  // toolpath is the compressed curve, within MD33100 (0.1 mm per axis) of the polyline, so its
-  // length is that of the polyline up to a small share (the 0.5 mm blocks of a pass are joined
-  // into smooth spans; the corners at the pass ends are kept).
+  // G0 Z50, G0 SUPA Z280). CYCLE832 selects COMPCAD: the toolpath is the compressed curve,
+  // within the tolerance of the polyline, so its length is that of the polyline up to a small
+  // share (the 0.5 mm blocks of a pass are joined into smooth spans; the corners at the pass
+  // ends are kept by COMPCAD and then rounded by G642 within MD33100, each rounding up to about
+  // 0.15 mm shorter than the corner it cuts, about 160 of them: docs/smoothing.md).
   const auto& s = j["summary"];
-  EXPECT_NEAR(s["path_length_mm"].get<double>(), generated_path, 1e-4 * generated_path);
+  EXPECT_NEAR(s["path_length_mm"].get<double>(), generated_path, 5e-3 * generated_path);
+  EXPECT_LT(s["path_length_mm"].get<double>(), generated_path);
   // Block rows are arrays in the order of "block_columns" (docs/schemas/run.schema.json).
   const auto& columns = j["block_columns"];
   const auto column = [&columns](const char* name) {
     return static_cast<size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
   };
-  const size_t rapid = column("rapid"), length = column("length_mm");
+  const size_t rapid = column("rapid"), length = column("length_mm"), label = column("label");
   ASSERT_LT(rapid, columns.size());
   ASSERT_LT(length, columns.size());
   double g1 = 0, g0 = 0;
   size_t compressed_blocks = 0;
   for (const auto& row : j["blocks"]) {
     (row[rapid].get<bool>() ? g0 : g1) += row[length].get<double>();
-    if (row.size() > columns.size()) compressed_blocks += row[columns.size()].get<size_t>();
+    // A compressor span has two more values; a G642 rounding one more (smoothing_deviation_mm).
+    if (row.size() > columns.size() && row[label] != "G642") compressed_blocks += row[columns.size()].get<size_t>();
   }
-  EXPECT_NEAR(g1, generated_g1, 1e-4 * generated_g1);
+  // The G642 roundings cut the pass-end corners (about 0.3 % of the G1 length, see above).
+  EXPECT_NEAR(g1, generated_g1, 5e-3 * generated_g1);
+  EXPECT_LT(g1, generated_g1);
   EXPECT_GT(compressed_blocks, 12000u);  // nearly all of the 13040 toolpath blocks
 
   // End: the last point X80 Y60 of the workpiece, turned by AROT Z15 and shifted by TRANS X50

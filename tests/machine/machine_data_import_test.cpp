@@ -177,6 +177,18 @@ TEST(MachineDataImport, MissingValuesAreReportedWithTheirDefault) {
   EXPECT_TRUE(any_contains(r.notes, "MD32310 MAX_ACCEL_OVL_FACTOR differs"));
 }
 
+TEST(MachineDataImport, CornerSmoothingData) {
+  const MachineDataImport r = import_text(
+      "CHANDATA(1)\n$MC_SMOOTHING_MODE=10\n$SC_SMOOTH_CONTUR_TOL=0.02\n$MC_IGNORE_OVL_FACTOR_FOR_ADIS=TRUE\n"
+      "$MC_G0_TOLERANCE_FACTOR=2\n$MC_MM_MAX_AXISPOLY_PER_BLOCK=5\n");
+  EXPECT_EQ(r.profile.smoothing.mode, 10);
+  EXPECT_DOUBLE_EQ(r.profile.smoothing.contur_tol_mm, 0.02);
+  EXPECT_TRUE(r.profile.smoothing.ignore_ovl_factor);
+  EXPECT_DOUBLE_EQ(r.profile.smoothing.g0_tolerance_factor, 2.0);
+  EXPECT_EQ(r.profile.smoothing.max_axispoly_per_block, 5);
+  EXPECT_TRUE(any_contains(r.missing, "SD42466 SMOOTH_ORI_TOL"));  // not given: default, reported
+}
+
 TEST(MachineDataImport, RequiredAxisValuesMissingTakeTheFallback) {
   // Only X's velocity: everything else of the axes is missing and reported; the IPO cycle too.
   const MachineDataImport r = import_text("$MA_MAX_AX_VELO[AX1]=12000\n");

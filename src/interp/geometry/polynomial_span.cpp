@@ -63,6 +63,11 @@ double PolynomialSpan::speed(double u) const {
   return (h1.head<3>() * h0(3) - h0.head<3>() * h1(3)).norm() / (h0(3) * h0(3));
 }
 
+double PolynomialSpan::arc_length_between(double u0, double u1) const {
+  const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
+  return ArcLengthTable::gauss5(sp, u0, u1);
+}
+
 double PolynomialSpan::parameter_at(double s) const {
   const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
   return table_.parameter_at(sp, s);

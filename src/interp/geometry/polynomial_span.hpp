@@ -32,6 +32,9 @@ class PolynomialSpan final : public Curve {
   double max_curvature() const override;
 
   ParametricDerivatives derivatives(double u) const;
+  // Arc length between two parameters (5-node Gauss-Legendre: for short sub-intervals of a
+  // smooth span, without the inversion at() needs).
+  double arc_length_between(double u0, double u1) const;
   double parameter_end() const { return u_end_; }
   double parameter_at(double s) const;
   // Turns parametric derivatives into the arc-length quantities of a CurvePoint.
