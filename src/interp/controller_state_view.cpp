@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include "interp/frame_components.hpp"
+#include <cstdio>
 
 #include "parser/command_table.hpp"
 
@@ -84,6 +86,23 @@ std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<
   return 0.0;
 }
 
+Value InterpreterStateView::frame_value(const Frame& frame, double unit) {
+  // CFRAME(linear row by row, translation in the program's unit): read back exactly by
+  // FrameComponents (frame_components.hpp) when the variable is written to a frame again.
+  std::string text(kWholeFrameFunction);
+  char buf[32];
+  for (int k = 0; k < 12; ++k) {
+    const double v = k < 9 ? frame.linear()(k / 3, k % 3) : frame.offset()[k - 9] / unit;
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    text += k == 0 ? '(' : ',';
+    text += buf;
+  }
+  text += ')';
+  Value f = Value::of_frame();
+  f.text = std::move(text);
+  return f;
+}
+
 int InterpreterStateView::settable_frame_number(const std::string& work_offset) {
   if (work_offset.size() < 2 || work_offset[0] != 'G') return 0;
   const int g = std::atoi(work_offset.c_str() + 1);
@@ -121,6 +140,12 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   // A measuring input (MEAS/MEAW) is taken as having switched: a dry run has no part to touch,
   // and a probing macro checks the flag before it goes on (the control would stop it otherwise).
   if (n == "$AC_MEA") return Value(1.0);
+  // Whole frames, to be kept in a FRAME variable and written back ($P_PFRAME=SAVED).
+  const double unit = s.inch ? 25.4 : 1.0;
+  if (n == "$P_PFRAME" && indices.empty()) return frame_value(s.frames.programmable(), unit);
+  if (n == "$P_UIFR" && indices.size() == 1 && indices[0].is_number() && indices[0].number >= 0 &&
+      indices[0].number < kSettableFrames && indices[0].number == std::trunc(indices[0].number))
+    return frame_value(interpreter_.settable_frame(static_cast<int>(indices[0].number)), unit);
   return std::nullopt;
 }
 

@@ -27,6 +27,7 @@ class InterpreterStateView : public parser::ControllerStateView {
   std::optional<double> axis_position(std::span<const parser::Value> indices) const;
   std::optional<double> tool_datum(int parameter, std::span<const parser::Value> indices) const;
   static int settable_frame_number(const std::string& work_offset);  // G54 -> 1 ...
+  static parser::Value frame_value(const Frame& frame, double unit);  // CFRAME(...) text
 
   const Interpreter& interpreter_;
   const machine::MachineProfile& profile_;

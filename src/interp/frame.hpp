@@ -30,6 +30,8 @@ class Frame {
   static Frame rotation_about(int axis, double angle_deg);
   static Frame scale(const Eigen::Vector3d& factors);
   static Frame mirror(const std::array<bool, 3>& axes);
+  // Any frame by its linear part and translation (p -> linear·p + translation).
+  static Frame affine(const Eigen::Matrix3d& linear, const Eigen::Vector3d& translation) { return Frame(linear, translation); }
 
   // This frame with `inner` chained inside it: (a.then(b))(p) = a(b(p)).
   Frame then(const Frame& inner) const;

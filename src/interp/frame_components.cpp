@@ -60,7 +60,8 @@ std::string FrameComponents::assign(std::string_view d, double unit) {
     const std::string error = one.assign_function(d.substr(start, i - start), unit, rank);
     if (!error.empty()) return error;
     product = product.then(one.frame());
-    in_order = in_order && (rank > last_rank || (rank == 0 && last_rank == 0));
+    // A whole frame (CFRAME) has no components: the chain is kept as the product.
+    in_order = in_order && !one.composed_ && (rank > last_rank || (rank == 0 && last_rank == 0));
     if (in_order) {
       merged.translation += one.translation;
       merged.fine += one.fine;
@@ -81,6 +82,19 @@ std::string FrameComponents::assign_function(std::string_view d, double unit, in
   const size_t open = d.find('(');
   if (open == std::string_view::npos || d.empty() || d.back() != ')') return "a frame expression drycut cannot read";
   const std::string_view name = d.substr(0, open);
+  if (name == kWholeFrameFunction) {
+    // drycut's own text for a frame read from the control ($P_PFRAME, $P_UIFR[n]): the linear
+    // part row by row, then the translation in the program's unit. Kept as the product.
+    const auto args = split_arguments(d.substr(open + 1, d.size() - open - 2));
+    if (args.size() != 12) return "a whole frame needs 12 values";
+    Eigen::Matrix3d linear;
+    Eigen::Vector3d offset;
+    for (int k = 0; k < 9; ++k) linear(k / 3, k % 3) = std::strtod(std::string(args[k]).c_str(), nullptr);
+    for (int k = 0; k < 3; ++k) offset[k] = std::strtod(std::string(args[9 + k]).c_str(), nullptr) * unit;
+    rank = 1;
+    composed_ = Frame::affine(linear, offset);
+    return {};
+  }
   rank = name == "CTRANS" || name == "CFINE" ? 0 : name == "CROT" ? 1 : name == "CSCALE" ? 2 : name == "CMIRROR" ? 3 : -1;
   if (rank < 0) return std::string(name) + " is not a frame function";
   const auto args = split_arguments(d.substr(open + 1, d.size() - open - 2));

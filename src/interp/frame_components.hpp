@@ -21,6 +21,10 @@
 
 namespace drycut::interp {
 
+// The function name of drycut's text for a whole frame read from the control:
+// CFRAME(l00,l01,l02,l10,l11,l12,l20,l21,l22,tx,ty,tz), the linear part and the translation.
+inline constexpr std::string_view kWholeFrameFunction = "CFRAME";
+
 struct FrameComponents {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   Eigen::Vector3d fine = Eigen::Vector3d::Zero();

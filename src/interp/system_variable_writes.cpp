@@ -51,8 +51,10 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
     const bool length = component == "TR" || component == "FI";
     if (axis < 0 || !components.set(axis, component, w.value.number * (length ? geometry_unit() : 1.0))) return false;
   } else {
-    if (w.value.kind != parser::ValueKind::Frame || w.value.text.empty()) return false;
-    const std::string error = components.assign(w.value.text, geometry_unit());
+    if (w.value.kind != parser::ValueKind::Frame) return false;
+    // An empty description is the null frame (a FRAME variable never assigned, CTRANS()).
+    const std::string error = w.value.text.empty() ? std::string() : components.assign(w.value.text, geometry_unit());
+    if (w.value.text.empty()) components = FrameComponents{};
     if (!error.empty()) {
       const SourceLocation where{block.file ? *block.file : std::string(), block.line, w.column};
       diagnostics_.warn(kNotModelled, w.name + ": " + error + " (the frame stays as it was)", where, block.text);

@@ -55,7 +55,11 @@ Value Variable::get(size_t element) const {
   switch (type_) {
     case DataType::String: return Value::of_text(texts_[element]);
     case DataType::Axis: return Value::of_axis(texts_[element]);
-    case DataType::Frame: return Value::of_frame();
+    case DataType::Frame: {
+      Value f = Value::of_frame();
+      f.text = texts_[element];  // the frame's description; empty: the null frame
+      return f;
+    }
     default: return Value(numbers_[element]);
   }
 }
@@ -81,6 +85,7 @@ void Variable::set(size_t element, const Value& v, uint32_t column) {
       return;
     case DataType::Frame:
       if (v.kind != ValueKind::Frame) throw LineError(12150, column, "FRAME " + name_ + " needs a frame");
+      texts_[element] = v.text;
       return;
     case DataType::Char:
       if (v.is_text() && v.text.size() == 1) {
