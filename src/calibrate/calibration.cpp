@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <atomic>
+#include <sstream>
 #include <cmath>
 #include <thread>
 
@@ -10,6 +11,12 @@ namespace drycut::calibrate {
 namespace {
 
 constexpr double kSensitivityStep = 0.05;  // in ln(field)
+
+std::string fmt_matrix(const Eigen::MatrixXd& m) {
+  std::ostringstream out;
+  out << m;
+  return out.str();
+}
 
 double mape(const std::vector<RunOutcome>& runs, bool fitted) {
   double sum = 0;
@@ -126,17 +133,24 @@ void Calibration::check_sensitive(const std::vector<std::vector<double>>& starts
 }
 
 void Calibration::check_rank(const Eigen::MatrixXd& s) const {
+  for (size_t j = 0; j < fields_.size(); ++j)
+    if (s.col(static_cast<Eigen::Index>(j)).cwiseAbs().maxCoeff() < options_.min_sensitivity_s)
+      throw CalibrationError("cannot identify " + fields_[j]->name + " (" + fields_[j]->machine_data +
+                             "): at the fitted values no measured run's time changes with it (the fit ran to where "
+                             "it has no effect)");
   if (fields_.size() < 2) return;
   Eigen::MatrixXd scaled = s;
   for (Eigen::Index j = 0; j < s.cols(); ++j) scaled.col(j) /= std::max(s.col(j).norm(), 1e-300);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const double smallest = svd.singularValues().minCoeff();
   if (smallest < options_.min_singular) {
     // The right singular vector of the smallest value names the fields that act alike.
     const Eigen::VectorXd v = svd.matrixV().col(svd.singularValues().size() - 1);
     std::string names;
+    const double largest = v.cwiseAbs().maxCoeff();
     for (Eigen::Index j = 0; j < v.size(); ++j)
-      if (std::abs(v[j]) > 0.3) names += (names.empty() ? "" : ", ") + fields_[j]->name;
+      if (std::abs(v[j]) >= 0.3 * largest) names += (names.empty() ? "" : ", ") + fields_[j]->name;
+    spdlog::debug("calibrate: scaled sensitivities\n{}\nnull direction {}", fmt_matrix(scaled), fmt_matrix(v.transpose()));
     throw CalibrationError("cannot identify " + names + " together: their effects on the measured times are "
                            "(nearly) proportional (smallest singular value of the scaled Jacobian " +
                            std::to_string(smallest) + "); fit fewer fields");
@@ -151,6 +165,8 @@ CalibrationReport Calibration::run() {
   ResidualFunction f = [&](const std::vector<double>& v) { return residuals(v, {}); };
   const RobustFitResult fit = robust_fit(f, bounds_, start_list, options_.fit);
   const Eigen::MatrixXd s = sensitivity(fit.values);
+  spdlog::debug("calibrate: sensitivities at the optimum (start {}, Huber cost {})\n{}", fit.start_index, fit.cost,
+                fmt_matrix(s));
   check_rank(s);
 
   CalibrationReport report;

@@ -13,8 +13,9 @@
 // Identifiability, before fitting: the sensitivity S_ij = d t_i / d ln p_j (central differences,
 // ln p ± 0.05, clamped to the bounds) at every start. A field whose largest |S_ij| over all runs
 // and starts is below `min_sensitivity_s` moves no time measurably: refused. After the fit, S at
-// the optimum with columns scaled to unit length: a smallest singular value below `min_singular`
-// means two fields act alike (rank-deficient Jacobian): refused.
+// the optimum: a field without effect there (the fit ran to where it does not act) is refused; with
+// the columns scaled to unit length, a smallest singular value below `min_singular` means two
+// fields act alike (rank-deficient Jacobian): refused, naming the fields of the null direction.
 // Leave-one-out: for every run, the fit without it (single start: the full fit's optimum),
 // then its time predicted with those values; the LOO error is that prediction's relative error.
 // Each evaluation plans every run, spread over `jobs` threads (a run on one thread at a time).

@@ -108,6 +108,40 @@ TEST(Calibration, RefusesAFieldNoRunDependsOn) {
   }
 }
 
+// Straight moves from rest to rest under SOFT: the time depends on the acceleration only through
+// MAX_AX_ACCEL x SOFT_ACCEL_FACTOR (no corner, no curve), so the two cannot be told apart.
+TEST(Calibration, RefusesTwoFieldsThatActOnlyTogether) {
+  std::vector<RecordedProgram> moves;
+  for (double length : {20.0, 150.0, 600.0}) {
+    RecordedProgram p = polygon(1, 1, 30000);
+    p.elements[0].curve = std::make_shared<geometry::LineCurve>(geometry::Vec3(0, 0, 0), geometry::Vec3(length, 0, 0));
+    moves.push_back(std::move(p));
+  }
+  machine::MachineProfile truth = test_profile();
+  truth.soft_accel_factor = 0.7;
+  truth.path_jerk_mm_s3 = 1e6;  // jerk high enough that the acceleration decides the ramps
+  for (auto& a : truth.axes) a.max_jerk_mm_s3 = 1e6;
+  Measurements m;
+  for (const auto& p : moves) {
+    MeasuredRun run;
+    run.name = "move";
+    run.time_s = *predict(p, truth, report::RunSpan{}, std::nullopt).time_s;
+    m.runs.push_back(run);
+  }
+  CalibrationOptions o;
+  o.leave_one_out = false;
+  // Started at the truth: the optimum is where both act, and they act alike there.
+  Calibration c(m, moves, truth, {find_profile_field("accel"), find_profile_field("soft_accel_factor")}, o);
+
+  try {
+    c.run();
+    FAIL() << "accel and soft_accel_factor were fitted together";
+  } catch (const CalibrationError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot identify accel, soft_accel_factor together"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Calibration, SameInputSameResult) {
   machine::MachineProfile truth = test_profile();
   truth.path_jerk_mm_s3 = 9000;
