@@ -76,7 +76,7 @@ void print_report(const calibrate::CalibrationReport& r) {
                 f.at_bound ? "AT BOUND" : "");
   std::printf("\n%-28s %8s %8s %7s %8s %7s %8s %7s %7s %7s", "program", "measured", "start", "err%", "fitted", "err%",
               "loo", "err%", "feed", "meas");
-  for (const auto& f : r.fields) std::printf(" %12s", ("dt/dln " + f.field->name).substr(0, 12).c_str());
+  for (size_t j = 0; j < r.fields.size(); ++j) std::printf(" %9s%zu", "S", j + 1);
   std::printf("\n");
   for (const auto& run : r.runs) {
     auto err = [&](double t) { return 100.0 * (t - run.measured_s) / run.measured_s; };
@@ -88,9 +88,12 @@ void print_report(const calibrate::CalibrationReport& r) {
       std::printf(" %8s %7s", "-", "");
     std::printf(" %7.0f %7s", run.fitted.min_feed_mm_min.value_or(0.0),
                 run.measured_feed ? std::to_string(static_cast<int>(std::lround(*run.measured_feed))).c_str() : "-");
-    for (double s : run.sensitivity) std::printf(" %12.3f", s);
+    for (double s : run.sensitivity) std::printf(" %10.3f", s);
     std::printf("\n");
   }
+  for (size_t j = 0; j < r.fields.size(); ++j)
+    std::printf("%sS%zu = d time / d ln %s (s)", j ? ", " : "\n", j + 1, r.fields[j].field->name.c_str());
+  std::printf("\n");
   std::printf("\nmean |time error|: start %.1f %%, fitted %.1f %% (in sample)", r.mape_start, r.mape_fitted);
   if (r.mape_loo) std::printf(", leave-one-out %.1f %%", *r.mape_loo);
   std::printf("\nHuber cost %.6f from start %zu\n", r.huber_cost, r.start_index);

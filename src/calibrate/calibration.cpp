@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <atomic>
+#include <cstdio>
 #include <sstream>
 #include <cmath>
 #include <thread>
@@ -28,6 +29,16 @@ double mape(const std::vector<RunOutcome>& runs, bool fitted) {
 }
 
 }  // namespace
+
+std::string Calibration::values_text(const std::vector<double>& values) const {
+  std::string out;
+  for (size_t j = 0; j < fields_.size(); ++j) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s%s %.4g", out.empty() ? "" : ", ", fields_[j]->name.c_str(), values[j]);
+    out += buf;
+  }
+  return out;
+}
 
 Calibration::Calibration(const Measurements& measurements, std::vector<RecordedProgram> programs,
                          machine::MachineProfile base, std::vector<const ProfileField*> fields,
@@ -132,12 +143,12 @@ void Calibration::check_sensitive(const std::vector<std::vector<double>>& starts
   }
 }
 
-void Calibration::check_rank(const Eigen::MatrixXd& s) const {
+void Calibration::check_rank(const Eigen::MatrixXd& s, const std::vector<double>& values) const {
   for (size_t j = 0; j < fields_.size(); ++j)
     if (s.col(static_cast<Eigen::Index>(j)).cwiseAbs().maxCoeff() < options_.min_sensitivity_s)
       throw CalibrationError("cannot identify " + fields_[j]->name + " (" + fields_[j]->machine_data +
-                             "): at the fitted values no measured run's time changes with it (the fit ran to where "
-                             "it has no effect)");
+                             "): at the fitted values (" + values_text(values) +
+                             ") no measured run's time changes with it (the fit ran to where it has no effect)");
   if (fields_.size() < 2) return;
   Eigen::MatrixXd scaled = s;
   for (Eigen::Index j = 0; j < s.cols(); ++j) scaled.col(j) /= std::max(s.col(j).norm(), 1e-300);
@@ -153,7 +164,7 @@ void Calibration::check_rank(const Eigen::MatrixXd& s) const {
     spdlog::debug("calibrate: scaled sensitivities\n{}\nnull direction {}", fmt_matrix(scaled), fmt_matrix(v.transpose()));
     throw CalibrationError("cannot identify " + names + " together: their effects on the measured times are "
                            "(nearly) proportional (smallest singular value of the scaled Jacobian " +
-                           std::to_string(smallest) + "); fit fewer fields");
+                           std::to_string(smallest) + " at " + values_text(values) + "); fit fewer fields");
   }
 }
 
@@ -167,7 +178,7 @@ CalibrationReport Calibration::run() {
   const Eigen::MatrixXd s = sensitivity(fit.values);
   spdlog::debug("calibrate: sensitivities at the optimum (start {}, Huber cost {})\n{}", fit.start_index, fit.cost,
                 fmt_matrix(s));
-  check_rank(s);
+  check_rank(s, fit.values);
 
   CalibrationReport report;
   report.profile = with_values(fit.values);

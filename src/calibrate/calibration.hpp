@@ -90,7 +90,8 @@ class Calibration {
   Eigen::VectorXd residuals(const std::vector<double>& values, const std::vector<size_t>& which) const;
   Eigen::MatrixXd sensitivity(const std::vector<double>& values) const;
   void check_sensitive(const std::vector<std::vector<double>>& starts) const;
-  void check_rank(const Eigen::MatrixXd& s) const;
+  void check_rank(const Eigen::MatrixXd& s, const std::vector<double>& values) const;
+  std::string values_text(const std::vector<double>& values) const;
   std::vector<std::vector<double>> starts() const;
 
   const Measurements& measurements_;
