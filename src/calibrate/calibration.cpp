@@ -207,7 +207,7 @@ CalibrationReport Calibration::run() {
       for (size_t i : all)
         if (i != left) kept.push_back(i);
       ResidualFunction g = [&](const std::vector<double>& v) { return residuals(v, kept); };
-      const RobustFitResult refit = robust_fit(g, bounds_, {fit.values}, options_.fit);
+      const RobustFitResult refit = robust_fit(g, bounds_, {fit.values, start_list[0]}, options_.fit);
       const double t = *predict_all(refit.values, {left})[0].time_s;
       report.runs[left].loo_s = t;
       sum += std::abs(t - measurements_.runs[left].time_s) / measurements_.runs[left].time_s;

@@ -16,8 +16,9 @@
 // the optimum: a field without effect there (the fit ran to where it does not act) is refused; with
 // the columns scaled to unit length, a smallest singular value below `min_singular` means two
 // fields act alike (rank-deficient Jacobian): refused, naming the fields of the null direction.
-// Leave-one-out: for every run, the fit without it (single start: the full fit's optimum),
-// then its time predicted with those values; the LOO error is that prediction's relative error.
+// Leave-one-out: for every run, the fit without it (two starts: the full fit's optimum and the
+// base profile's values), then its time predicted with those values; the LOO error is that
+// prediction's relative error.
 // Each evaluation plans every run, spread over `jobs` threads (a run on one thread at a time).
 #include <optional>
 #include <string>

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli_support.hpp"
 
@@ -105,6 +106,36 @@ TEST(CalibrateCommand, SameInputSameOutput) {
   const CliRun b = w.calibrate(measured, "--fit path_jerk,ovl_factor --no-loo");
   ASSERT_EQ(a.exit_code, 0) << a.out;
   EXPECT_EQ(a.out, b.out);
+}
+
+// The re-planned recording gives what the whole pipeline gives: calibrate's start column (the
+// base profile) equals `drycut run --span` of the same program to the printed digit.
+TEST(CalibrateCommand, ReplayMatchesTheFullRun) {
+  Workspace w;
+  const fs::path thesis = fs::path(DRYCUT_SOURCE_DIR) / "programs" / "thesis";
+  nlohmann::json runs = nlohmann::json::array();
+  for (const char* p : {"EKVI_LIN_15.MPF", "EKVI_C_15.MPF"})
+    runs.push_back({{"program", fs::relative(thesis / p, w.dir).string()}, {"time", 20.0}});
+  const fs::path measured = w.dir / "thesis.json";
+  std::ofstream(measured) << nlohmann::json{{"span", "after_dwell..contour_end"}, {"runs", runs}}.dump(2);
+  const CliRun fit = w.calibrate(measured, "--fit path_jerk --no-loo");
+  ASSERT_EQ(fit.exit_code, 0) << fit.out;
+  for (const char* p : {"EKVI_LIN_15.MPF", "EKVI_C_15.MPF"}) {
+    const CliRun run = run_shell("cd '" + thesis.string() + "' && " +
+                                 drycut_command(std::string("run ") + p + " -q --span after_dwell..contour_end") + " 2>&1");
+    const auto at = run.out.find("span after_dwell..contour_end");
+    ASSERT_NE(at, std::string::npos) << run.out;
+    double span = 0;
+    std::istringstream(run.out.substr(at + 30)) >> span;
+    const auto row = fit.out.find(std::string("/") + p);
+    ASSERT_NE(row, std::string::npos) << fit.out;
+    std::istringstream line(fit.out.substr(fit.out.rfind('\n', row) + 1));
+    std::string name;
+    double measured_s = 0, start_s = 0;
+    line >> name >> measured_s >> start_s;
+    EXPECT_GT(span, 15.0) << run.out;  // parsed: the span is about 20 s
+    EXPECT_NEAR(start_s, span, 0.005) << p << "\n" << fit.out << run.out;
+  }
 }
 
 }  // namespace
