@@ -86,7 +86,7 @@ Eigen::VectorXd fit_from(CachedProblem& problem, Eigen::VectorXd u, const Robust
     WeightedFunctor functor{problem, w.cwiseSqrt(), o.fd_step, static_cast<int>(u.size())};
     Eigen::LevenbergMarquardt<WeightedFunctor> lm(functor);
     lm.parameters.maxfev = o.max_evaluations;
-    lm.parameters.xtol = 1e-6;
+    lm.parameters.xtol = o.xtol;
     lm.parameters.ftol = 1e-10;
     lm.minimize(u);
     const Eigen::VectorXd next = huber_weights(problem.residuals(u), o.huber_k);

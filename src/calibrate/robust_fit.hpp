@@ -41,7 +41,10 @@ struct RobustFitOptions {
   double huber_k = 0.05;      // residuals beyond this get weight k/|r|
   int irls_rounds = 6;
   double fd_step = 0.01;      // forward-difference step in u
-  int max_evaluations = 400;  // per LM run (MINPACK maxfev counts residual calls)
+  int max_evaluations = 200;  // per LM run (MINPACK maxfev counts residual calls)
+  // Relative step size in u at which LM stops: 1e-4 is below 0.1 % of any field value, finer than
+  // the measurements can resolve (each evaluation plans every program).
+  double xtol = 1e-4;
 };
 
 struct RobustFitResult {
