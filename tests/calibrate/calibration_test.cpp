@@ -82,6 +82,21 @@ TEST(Calibration, RecoversThePathJerkTheMeasurementsWereMadeWith) {
   for (const auto& run : r.runs) EXPECT_LT(run.sensitivity[0], 0.0);
 }
 
+TEST(Calibration, RecoversTheAxisJerk) {
+  machine::MachineProfile base = test_profile();
+  base.path_jerk_mm_s3 = 1e7;  // the axis jerk MD32431 decides the ramps
+  machine::MachineProfile truth = base;
+  for (auto& a : truth.axes) a.max_jerk_mm_s3 = 30000;  // 30 m/s³; the calibration starts from 100
+  const Measurements m = synthetic(truth, false);
+  CalibrationOptions o;
+  o.jobs = 2;
+  o.leave_one_out = false;
+  Calibration c(m, programs(), base, {find_profile_field("jerk")}, o);
+  const CalibrationReport r = c.run();
+  EXPECT_DOUBLE_EQ(r.fields[0].start, 100.0);
+  EXPECT_NEAR(r.fields[0].fitted, 30.0, 0.3);
+}
+
 TEST(Calibration, RecoversTwoFieldsWithFeeds) {
   machine::MachineProfile truth = test_profile();
   truth.path_jerk_mm_s3 = 25000;
