@@ -124,6 +124,17 @@ std::vector<std::vector<double>> Calibration::starts() const {
     for (const Bounds& b : bounds_) s.push_back(std::exp(std::log(b.lower) + share * std::log(b.upper / b.lower)));
     out.push_back(s);
   }
+  // With several fields, each one also alone at 1/4 and 3/4 while the others keep the profile's
+  // values: a limit that does not bind at a start has no gradient there (a plateau), so a joint
+  // start can miss an optimum a single field reaches.
+  if (fields_.size() > 1) {
+    for (size_t j = 0; j < fields_.size(); ++j)
+      for (double share : {0.25, 0.75}) {
+        std::vector<double> s = own;
+        s[j] = std::exp(std::log(bounds_[j].lower) + share * std::log(bounds_[j].upper / bounds_[j].lower));
+        out.push_back(s);
+      }
+  }
   return out;
 }
 

@@ -9,7 +9,9 @@
 // a ratio, weighted down). The fit is robust_fit.hpp (log/logistic bounds, LM, Huber IRLS,
 // multi-start) over these residuals.
 // Starts (fixed, so the output is deterministic): the profile's own values, then for every field
-// at once the geometric points 1/4, 1/2 and 3/4 of the way between its bounds in log space.
+// at once the geometric points 1/4, 1/2 and 3/4 of the way between its bounds in log space; with
+// several fields also each field alone at 1/4 and 3/4, the others at the profile's values (a limit
+// that does not bind has no gradient: a joint start can miss what one field alone reaches).
 // Identifiability, before fitting: the sensitivity S_ij = d t_i / d ln p_j (central differences,
 // ln p ± 0.05, clamped to the bounds) at every start. A field whose largest |S_ij| over all runs
 // and starts is below `min_sensitivity_s` moves no time measurably: refused. After the fit, S at
