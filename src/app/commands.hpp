@@ -16,6 +16,7 @@ void register_language(CLI::App& app);
 void register_report(CLI::App& app);
 void register_compare(CLI::App& app);
 void register_experiment(CLI::App& app);
+void register_calibrate(CLI::App& app);
 void register_regress(CLI::App& app);
 void register_profile(CLI::App& app);
 

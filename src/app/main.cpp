@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   drycut::app::register_report(app);
   drycut::app::register_compare(app);
   drycut::app::register_experiment(app);
+  drycut::app::register_calibrate(app);
   drycut::app::register_regress(app);
   drycut::app::register_generate(app);
   drycut::app::register_deviation(app);
