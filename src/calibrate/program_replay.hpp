@@ -7,6 +7,9 @@
 // the trial profile. That is the pipeline `drycut run` uses after the compensation stage, without
 // parsing, interpreting and compensating the program again (the planner is most of the
 // remaining cost). Elements share their curves; a program is re-planned by one thread at a time.
+// Exception: under G641..G645 the corner-smoothing stage (interp/corner_smoothing.hpp) decides
+// where to round from the dynamics of the profile the program was recorded with; a calibration
+// of such programs keeps those decisions (docs/calibrate.md). The reference experiment runs G64.
 #include <optional>
 #include <string>
 #include <vector>
