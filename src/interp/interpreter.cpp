@@ -208,19 +208,8 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       state_.feed = a.value;
       state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
-    } else if (n == "S") {
-      if (ctx.dwell) continue;  // G4 S<rev>
-      if (a.value < 0) raise(ctx, 12160, "S must not be negative", a.column);
-      state_.spindle_rpm = a.value;
-    } else if (const int spindle = numbered_spindle(n); spindle > 0) {
-      // S<n>=: the speed of spindle n (Fundamentals, "Spindle speed S"): the master's is S.
-      if (spindle != profile_.master_spindle) {
-        warn_once(ctx, "spindle " + std::to_string(spindle) + " (only the master spindle is simulated)", a.column);
-        continue;
-      }
-      if (ctx.dwell) continue;
-      if (a.value < 0) raise(ctx, 12160, std::string(n) + " must not be negative", a.column);
-      state_.spindle_rpm = a.value;
+    } else if (n == "S" || numbered_spindle(n) > 0) {
+      apply_spindle_speed(ctx, a);
     } else if (n == "LIMS") {
       if (a.value < 0) raise(ctx, 12160, "LIMS must not be negative", a.column);
       state_.spindle_speed_limit = a.value;
@@ -258,6 +247,17 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       note_extra_axis_word(ctx, a);
     }
   }
+}
+
+void Interpreter::apply_spindle_speed(BlockContext& ctx, const AddressWord& a) {
+  // S, or S<n>= the speed of spindle n (Fundamentals, "Spindle speed S"): the master's is S.
+  if (const int spindle = numbered_spindle(a.name); spindle > 0 && spindle != profile_.master_spindle) {
+    warn_once(ctx, "spindle " + std::to_string(spindle) + " (only the master spindle is simulated)", a.column);
+    return;
+  }
+  if (ctx.dwell) return;  // G4 S<rev>
+  if (a.value < 0) raise(ctx, 12160, a.name + " must not be negative", a.column);
+  state_.spindle_rpm = a.value;
 }
 
 int Interpreter::numbered_spindle(std::string_view name) {

@@ -139,6 +139,7 @@ class Interpreter {
   void warn_once(const BlockContext& ctx, const std::string& what, uint32_t column);
   // "S2" -> 2 (the spindle of a numbered speed address S<n>=), 0 for any other name.
   static int numbered_spindle(std::string_view name);
+  void apply_spindle_speed(BlockContext& ctx, const parser::AddressWord& a);  // S, S<n>=
 
   const machine::MachineProfile& profile_;
   ElementSink& sink_;

@@ -430,6 +430,13 @@ bool LineParser::parse_statement(ParsedLine& out) {
     parse_proc(out);
     return true;
   }
+  if (const std::optional<bool> call = parse_call(out, w)) return *call;
+  return false;
+}
+
+// EXTCALL, PCALL, CALL BLOCK and CALL: true when a call statement was parsed, false when the
+// words go on as an ordinary subprogram call (PCALL), nullopt when `w` starts no call.
+std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) {
   // EXTCALL runs a program from an external memory (Function Manual K1, "Executing from external
   // source": EXTCALL("<path/><name>")); drycut's folders are that memory, so it is a CALL. The
   // form without parentheses that shop programs use is taken too.
@@ -498,7 +505,7 @@ bool LineParser::parse_statement(ParsedLine& out) {
     expect_end();
     return true;
   }
-  return false;
+  return std::nullopt;
 }
 
 void LineParser::parse_words(ParsedLine& out) {

@@ -1,6 +1,7 @@
 #pragma once
 // Turns one line into a ParsedLine (syntax only). Owns the lexer so one LineParser, reused,
 // parses a whole program without per-line allocation.
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -19,6 +20,7 @@ class LineParser {
  private:
   void parse_head(ParsedLine& out);
   bool parse_statement(ParsedLine& out);
+  std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_words(ParsedLine& out);
   void parse_jump_target(ParsedLine& out);
   void parse_jump_target(ParsedLine& out, JumpTarget& target);
