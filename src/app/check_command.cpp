@@ -27,7 +27,7 @@ struct CheckOptions {
 // Takes the elements and drops them: `check` interprets (and compensates) but does not plan.
 class DiscardingSink : public interp::ElementSink {
  public:
-  void consume(interp::PathElement) override {}
+  void consume(interp::PathElement&&) override {}
 };
 
 nlohmann::json alarm_json(const Alarm& a) {

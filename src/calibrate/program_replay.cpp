@@ -78,7 +78,7 @@ Prediction predict(const RecordedProgram& program, const machine::MachineProfile
   BlockLog log(window);
   report::PlanObserverPair observers(events, log);
   motion::Planner planner(profile, observers);
-  for (const auto& e : program.elements) planner.consume(e);
+  for (const auto& e : program.elements) planner.consume(interp::PathElement(e));  // a copy: kept for the next trial
   planner.finish();
   Prediction out;
   out.time_s = events.span_s(span);

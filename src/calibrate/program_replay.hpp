@@ -29,7 +29,7 @@ struct RecordedProgram {
 class RecordingSink : public interp::ElementSink {
  public:
   explicit RecordingSink(RecordedProgram& out) : out_(out) {}
-  void consume(interp::PathElement element) override { out_.elements.push_back(std::move(element)); }
+  void consume(interp::PathElement&& element) override { out_.elements.push_back(std::move(element)); }
 
  private:
   RecordedProgram& out_;

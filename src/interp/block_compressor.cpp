@@ -69,7 +69,7 @@ void BlockCompressor::start_run(const PathElement& e) {
   run_dynamics_ = e.dynamics;
 }
 
-void BlockCompressor::consume(PathElement element) {
+void BlockCompressor::consume(PathElement&& element) {
   if (joins_run(element)) {
     if (element.curve->length() > 0.0) points_.push_back(element.curve->end());
     point_of_.push_back(points_.size() - 1);

@@ -29,7 +29,7 @@ class BlockCompressor final : public ElementSink {
  public:
   BlockCompressor(ElementSink& next, const machine::MachineProfile& profile);
 
-  void consume(PathElement element) override;
+  void consume(PathElement&& element) override;
   void finish() override;
 
   // The fit settings the profile gives a compressor mode (COMPON: C1 and 10 blocks per span ...).

@@ -78,7 +78,7 @@ bool CornerSmoothing::holds(const PathElement& e) const {
   return e.curve->length() > kMinLength;
 }
 
-void CornerSmoothing::consume(PathElement element) {
+void CornerSmoothing::consume(PathElement&& element) {
   if (pending_) {
     if (round_corner(element)) return;  // it handed on or holds the trimmed element
     emit_pending();

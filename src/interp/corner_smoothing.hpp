@@ -83,7 +83,7 @@ class CornerSmoothing final : public ElementSink {
  public:
   CornerSmoothing(ElementSink& next, const machine::MachineProfile& profile);
 
-  void consume(PathElement element) override;
+  void consume(PathElement&& element) override;
   void finish() override;
 
   // The trim the rules give the corner at the end of `a` into `b` (unit tangents u1, u2;

@@ -108,7 +108,7 @@ CutterCompensation::CutterCompensation(ElementSink& downstream, const machine::M
                                        Diagnostics& diagnostics)
     : downstream_(downstream), profile_(profile), diagnostics_(diagnostics) {}
 
-void CutterCompensation::consume(PathElement element) {
+void CutterCompensation::consume(PathElement&& element) {
   if (phase_ == Phase::Inactive) {
     if (element.is_motion() && element.compensation.side != CompensationSide::None) {
       select(std::move(element));

@@ -76,7 +76,7 @@ class CutterCompensation : public ElementSink {
  public:
   CutterCompensation(ElementSink& downstream, const machine::MachineProfile& profile, Diagnostics& diagnostics);
 
-  void consume(PathElement element) override;
+  void consume(PathElement&& element) override;
   void finish() override;
 
  private:

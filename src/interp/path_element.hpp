@@ -165,7 +165,7 @@ struct PathElement {
 class ElementSink {
  public:
   virtual ~ElementSink() = default;
-  virtual void consume(PathElement element) = 0;
+  virtual void consume(PathElement&& element) = 0;
   // Called once after the last element.
   virtual void finish() {}
 };

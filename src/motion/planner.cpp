@@ -61,7 +61,7 @@ void Planner::validate(const interp::PathElement& e) const {
   }
 }
 
-void Planner::consume(interp::PathElement element) {
+void Planner::consume(interp::PathElement&& element) {
   validate(element);
   switch (element.kind) {
     case interp::ElementKind::Line:

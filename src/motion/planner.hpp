@@ -141,7 +141,7 @@ class Planner : public interp::ElementSink {
  public:
   Planner(const machine::MachineProfile& profile, PlanObserver& observer, PlannerOptions options = {});
 
-  void consume(interp::PathElement element) override;
+  void consume(interp::PathElement&& element) override;
   void finish() override;
   const PlanSummary& summary() const;
 

@@ -36,7 +36,7 @@ double clean(double v) { return std::abs(v) < 5e-7 ? 0.0 : v; }
 
 }  // namespace
 
-void ElementListingWriter::consume(interp::PathElement e) {
+void ElementListingWriter::consume(interp::PathElement&& e) {
   // File names without folders keep the listings independent of where the tests run.
   const std::string file = std::filesystem::path(e.source.file_name()).filename().string();
   std::fprintf(out_, "%-8s %-8s", kind_name(e.kind), e.label.c_str());

@@ -11,7 +11,7 @@ namespace drycut::report {
 class ElementListingWriter : public interp::ElementSink {
  public:
   explicit ElementListingWriter(std::FILE* out) : out_(out) {}
-  void consume(interp::PathElement element) override;
+  void consume(interp::PathElement&& element) override;
   void finish() override { std::fflush(out_); }
 
  private:

@@ -13,7 +13,7 @@ class ElementTap : public interp::ElementSink {
   using Watcher = std::function<void(const interp::PathElement&)>;
   ElementTap(interp::ElementSink& downstream, Watcher watcher)
       : downstream_(downstream), watcher_(std::move(watcher)) {}
-  void consume(interp::PathElement element) override {
+  void consume(interp::PathElement&& element) override {
     watcher_(element);
     downstream_.consume(std::move(element));
   }

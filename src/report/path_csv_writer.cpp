@@ -15,7 +15,7 @@ void PathCsvWriter::write_row(double s, const geometry::Vec3& p, const interp::P
   last_written_s_ = s;
 }
 
-void PathCsvWriter::consume(interp::PathElement element) {
+void PathCsvWriter::consume(interp::PathElement&& element) {
   if (!element.is_motion() || !element.curve) return;
   const double length = element.curve->length();
   const double end = s_total_ + length;

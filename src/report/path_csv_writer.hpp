@@ -13,7 +13,7 @@ class PathCsvWriter : public interp::ElementSink {
  public:
   // `out` stays owned by the caller; step must be > 0.
   PathCsvWriter(std::FILE* out, double step_mm);
-  void consume(interp::PathElement element) override;
+  void consume(interp::PathElement&& element) override;
   void finish() override;
 
   double total_length_mm() const { return s_total_; }

@@ -10,7 +10,7 @@ PathSampler::PathSampler(double step_mm) : step_(step_mm) {
   if (!(step_mm > 0)) throw std::invalid_argument("sample step must be > 0");
 }
 
-void PathSampler::consume(interp::PathElement element) {
+void PathSampler::consume(interp::PathElement&& element) {
   if (!element.is_motion() || !element.curve) return;
   const double length = element.curve->length();
   if (!(length > 0) || !std::isfinite(length)) return;

@@ -21,7 +21,7 @@ struct SampledElement {
 class PathSampler : public interp::ElementSink {
  public:
   explicit PathSampler(double step_mm);
-  void consume(interp::PathElement element) override;
+  void consume(interp::PathElement&& element) override;
   const std::vector<SampledElement>& elements() const { return elements_; }
 
  private:

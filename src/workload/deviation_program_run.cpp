@@ -17,8 +17,8 @@ class TeeSink : public interp::ElementSink {
   TeeSink(interp::ElementSink& programmed, interp::ElementSink* compensation, std::optional<Alarm>& branch_alarm)
       : programmed_(programmed), compensation_(compensation), branch_alarm_(branch_alarm) {}
 
-  void consume(interp::PathElement element) override {
-    if (compensation_) guarded([&] { compensation_->consume(element); });
+  void consume(interp::PathElement&& element) override {
+    if (compensation_) guarded([&] { compensation_->consume(interp::PathElement(element)); });  // a copy
     programmed_.consume(std::move(element));
   }
   void finish() override {

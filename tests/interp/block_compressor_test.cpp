@@ -16,7 +16,7 @@ std::vector<PathElement> compressed(const std::string& text, const machine::Mach
   EXPECT_FALSE(run->alarm) << run->alarm->format();
   CollectingSink out;
   BlockCompressor stage(out, profile);
-  for (auto& e : run->sink.elements) stage.consume(e);
+  for (auto& e : run->sink.elements) stage.consume(PathElement(e));
   stage.finish();
   EXPECT_TRUE(out.finished);
   return out.motions();

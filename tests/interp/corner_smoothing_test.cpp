@@ -28,7 +28,7 @@ Smoothed smoothed(const std::string& text, const machine::MachineProfile& profil
   EXPECT_FALSE(run->alarm) << run->alarm->format();
   CollectingSink out;
   CornerSmoothing stage(out, profile);
-  for (auto& e : run->sink.elements) stage.consume(e);
+  for (auto& e : run->sink.elements) stage.consume(PathElement(e));
   stage.finish();
   EXPECT_TRUE(out.finished);
   return {run->sink.motions(), out.motions()};
@@ -291,7 +291,7 @@ TEST(CornerSmoothingCurves, LineIntoArcIsRoundedWithinTheContourTolerance) {
   const auto programmed = run->sink.motions();
   testing::CollectingSink out;
   CornerSmoothing stage(out, p);
-  for (auto& e : run->sink.elements) stage.consume(e);
+  for (auto& e : run->sink.elements) stage.consume(PathElement(e));
   stage.finish();
   const auto m = out.motions();
   ASSERT_EQ(m.size(), 4u);
@@ -329,7 +329,7 @@ TEST(CornerSmoothingCurves, CompcadKeptCornerIsRounded) {
   testing::CollectingSink out;
   CornerSmoothing smoothing(out, p);
   BlockCompressor compressor(smoothing, p);
-  for (auto& e : run->sink.elements) compressor.consume(e);
+  for (auto& e : run->sink.elements) compressor.consume(PathElement(e));
   compressor.finish();
   const auto m = out.motions();
   size_t rounded = 0;

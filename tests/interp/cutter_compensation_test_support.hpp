@@ -21,7 +21,7 @@ using geometry::Vec3;
 struct CollectingSink : interp::ElementSink {
   std::vector<interp::PathElement> elements;
   bool finished = false;
-  void consume(interp::PathElement e) override { elements.push_back(std::move(e)); }
+  void consume(interp::PathElement&& e) override { elements.push_back(std::move(e)); }
   void finish() override { finished = true; }
   std::vector<interp::PathElement> motions() const {
     std::vector<interp::PathElement> out;

@@ -14,7 +14,7 @@ namespace drycut::interp::testing {
 
 class CollectingSink : public ElementSink {
  public:
-  void consume(PathElement e) override { elements.push_back(std::move(e)); }
+  void consume(PathElement&& e) override { elements.push_back(std::move(e)); }
   void finish() override { finished = true; }
   std::vector<PathElement> motions() const {
     std::vector<PathElement> out;

@@ -30,7 +30,7 @@ using geometry::Vec3;
 
 struct Collector : ElementSink {
   std::vector<PathElement> motions;
-  void consume(PathElement e) override {
+  void consume(PathElement&& e) override {
     if (e.is_motion()) motions.push_back(std::move(e));
   }
 };
@@ -40,8 +40,8 @@ struct Tee : ElementSink {
   ElementSink& a;
   ElementSink& b;
   Tee(ElementSink& first, ElementSink& second) : a(first), b(second) {}
-  void consume(PathElement e) override {
-    a.consume(e);
+  void consume(PathElement&& e) override {
+    a.consume(PathElement(e));
     b.consume(std::move(e));
   }
   void finish() override {

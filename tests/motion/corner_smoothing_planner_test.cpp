@@ -24,7 +24,7 @@ std::unique_ptr<SmoothedPlan> plan_program(const std::string& text, const machin
   auto out = std::make_unique<SmoothedPlan>();
   Planner planner(profile, out->rec);
   interp::CornerSmoothing stage(planner, profile);
-  for (auto& e : run->sink.elements) stage.consume(e);
+  for (auto& e : run->sink.elements) stage.consume(interp::PathElement(e));
   stage.finish();
   out->summary = planner.summary();
   return out;

@@ -26,9 +26,19 @@ ArcCurve::ArcCurve(Vec3 centre, double radius, Vec3 e1, Vec3 e2, double start_an
   speed_ = std::hypot(radius_, pitch_);
   length_ = sweep_ != 0.0 ? std::abs(sweep_) * speed_ : std::abs(axial_travel_);
   curvature_ = (sweep_ != 0.0 && speed_ > 0.0) ? radius_ / (speed_ * speed_) : 0.0;
+  start_point_ = evaluate(0.0);
+  end_point_ = evaluate(length_);
 }
 
 CurvePoint ArcCurve::at(double s) const {
+  // The ends are asked for far more often than any other point (joins, corners, positions):
+  // kept from the constructor.
+  if (s <= 0.0) return start_point_;
+  if (s >= length_) return end_point_;
+  return evaluate(s);
+}
+
+CurvePoint ArcCurve::evaluate(double s) const {
   s = std::clamp(s, 0.0, length_);
   CurvePoint p;
   if (sweep_ == 0.0 || speed_ == 0.0) {

@@ -19,6 +19,8 @@ class ArcCurve final : public Curve {
 
   double length() const override { return length_; }
   CurvePoint at(double s) const override;
+  Vec3 start() const override { return start_point_.position; }
+  Vec3 end() const override { return end_point_.position; }
   double max_curvature() const override { return curvature_; }
 
   const Vec3& centre() const { return centre_; }
@@ -41,6 +43,9 @@ class ArcCurve final : public Curve {
   double speed_;          // |dP/dphi| = sqrt(r^2 + pitch^2)
   double length_;
   double curvature_;
+  CurvePoint start_point_, end_point_;  // evaluate(0), evaluate(length_)
+
+  CurvePoint evaluate(double s) const;
 };
 
 }  // namespace drycut::geometry
