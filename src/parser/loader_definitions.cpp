@@ -169,14 +169,25 @@ void ProgramLoader::define_macro(std::string_view name, std::string_view text) {
   macros_.insert_or_assign(std::string(name), std::string(text));
   if (name.empty()) return;
   const char c = name.front();
-  macro_initials_[static_cast<unsigned char>(c)] = true;
-  if (c >= 'a' && c <= 'z') macro_initials_[static_cast<unsigned char>(c - 'a' + 'A')] = true;
-  if (c >= 'A' && c <= 'Z') macro_initials_[static_cast<unsigned char>(c - 'A' + 'a')] = true;
+  for (const char k : {c, static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c),
+                       static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c)}) {
+    if (macro_initials_[static_cast<unsigned char>(k)]) continue;
+    macro_initials_[static_cast<unsigned char>(k)] = true;
+    macro_initial_list_ += k;
+  }
 }
 
 bool ProgramLoader::may_hold_macro() const {
   // Every block passes here once macros exist (drycut's own cycle macros always do), so the
   // common block without any name that starts like a macro name costs one scan, no copy.
+  if (macro_initial_list_.size() <= 4) {
+    // Few initials (drycut's own macros all start with '_'): memchr per initial.
+    const std::string_view line(text_.data(), std::min(text_.size(), text_.find(';')));
+    for (const char c : macro_initial_list_)
+      for (size_t k = line.find(c); k != std::string_view::npos; k = line.find(c, k + 1))
+        if (k == 0 || !is_name_char(line[k - 1])) return true;
+    return false;
+  }
   for (size_t k = 0; k < text_.size(); ++k) {
     const char c = text_[k];
     if (c == ';') return false;

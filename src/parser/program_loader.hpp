@@ -158,6 +158,7 @@ class ProgramLoader {
   SystemVariables system_variables_;
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
   std::array<bool, 256> macro_initials_{};  // first letters of the macro names (both cases)
+  std::string macro_initial_list_;           // the same letters, each once
   LoopGuard loop_guard_;
   std::string loop_state_;  // reused buffer
   uint64_t next_loop_check_ = 0;  // steps_ before which a backward jump is not checked (big states)
