@@ -100,6 +100,15 @@ constexpr std::array kCommands{
     CommandEntry{"UNLOCK", N},  CommandEntry{"RESET", N},   CommandEntry{"NEWCONF", N},
     CommandEntry{"WRITE", N},   CommandEntry{"READ", N},    CommandEntry{"DELETE", N},
     CommandEntry{"JERKA", N},
+    // Turning: thread run-in/run-out and fast retraction (DITS=, DITE=, LFON, DILF=, ALF=),
+    // spindle coupling for part transfer (COUPDEF ...), diameter switching of cycles
+    // (Fundamentals and Job Planning, turning sections): not modelled, warned by name.
+    CommandEntry{"DITS", N},    CommandEntry{"DITE", N},    CommandEntry{"DILF", N},
+    CommandEntry{"ALF", N},     CommandEntry{"LFON", N},    CommandEntry{"LFOF", N},
+    CommandEntry{"LFPOS", N},   CommandEntry{"LFWP", N},    CommandEntry{"LFTXT", N},
+    CommandEntry{"COUPDEF", N}, CommandEntry{"COUPONC", N}, CommandEntry{"COUPOFS", N},
+    CommandEntry{"COUPDEL", N}, CommandEntry{"COUPRES", N}, CommandEntry{"WAITC", N},
+    CommandEntry{"DIAMCHAN", N}, CommandEntry{"DIAMCYCOF", N},
     // Valid, and modelled by doing nothing: they change display, single-block or buffer
     // behaviour, nothing a dry run measures.
     CommandEntry{"SBLOF", E},   CommandEntry{"SBLON", E},   CommandEntry{"DISPLOF", E},
