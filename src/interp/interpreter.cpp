@@ -234,6 +234,10 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "SD") {
       if (a.value != 2 && a.value != 3) raise(ctx, 12160, "SD must be 2 or 3", a.column);
       state_.bspline_degree = static_cast<int>(a.value);
+    } else if (n == "OFFN") {
+      // Programmed contour offset (Fundamentals, "Tool radius compensation, OFFN"): the offset
+      // path lies OFFN further out, as with a tool that much larger.
+      state_.offn_mm = a.value * geometry_unit();
     } else if (n == "DISC") {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
@@ -409,7 +413,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   // A mirror in the plane swaps the sides: G41 on the programmed contour is right of the mirrored one.
   if (e.compensation.side != CompensationSide::None && frame_mirrors_plane(block_frame(ctx)))
     e.compensation.side = e.compensation.side == CompensationSide::Left ? CompensationSide::Right : CompensationSide::Left;
-  e.compensation.radius_mm = tools_.offsets().radius_mm;
+  e.compensation.radius_mm = tools_.offsets().radius_mm + state_.offn_mm;
   e.compensation.intersection_corners = state_.intersection_corners;
   e.compensation.contour_approach = state_.contour_approach;
   e.compensation.collision_detection = state_.collision_detection;

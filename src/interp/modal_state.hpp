@@ -61,6 +61,7 @@ struct ModalState {
   bool contour_approach = false;      // KONT / NORM
   bool collision_detection = false;   // CDON / CDOF
   double disc = 0.0;                  // DISC=
+  double offn_mm = 0.0;            // OFFN=: contour offset added to the tool radius under G41/G42
   Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD
 
   // Applies one reset/program code by name ("G64", "SOFT", "BTAN", ...). Returns false if the

@@ -183,5 +183,21 @@ TEST(Interpreter, NumberedToolAndEdgeInTheToolChangeBlock) {
   EXPECT_DOUBLE_EQ(by_default->sink.motions()[0].compensation.radius_mm, 2.0);  // MD20270: edge 1
 }
 
+TEST(Interpreter, OffnAddsToTheToolRadiusUntilReprogrammed) {
+  // Fundamentals, "OFFN": the offset path lies OFFN further from the contour (T1: radius 2 mm);
+  // OFFN is modal, OFFN=0 returns to the tool radius; in inch (G70) the value is in inches.
+  auto r = run_program("T1 M6 D1\nOFFN=1\nG41 G1 X10 F100\nY10\nOFFN=0.5 X0\nOFFN=0 Y0\nG40 X-10\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  const auto& m = r->sink.motions();
+  ASSERT_GE(m.size(), 4u);
+  EXPECT_DOUBLE_EQ(m[0].compensation.radius_mm, 3.0);
+  EXPECT_DOUBLE_EQ(m[1].compensation.radius_mm, 3.0);
+  EXPECT_DOUBLE_EQ(m[2].compensation.radius_mm, 2.5);
+  EXPECT_DOUBLE_EQ(m[3].compensation.radius_mm, 2.0);
+  auto inch = run_program("T1 M6 D1\nG70 OFFN=0.1\nG41 G1 X1 F10\nM30\n");
+  ASSERT_FALSE(inch->alarm) << inch->alarm->format();
+  EXPECT_NEAR(inch->sink.motions()[0].compensation.radius_mm, 2.0 + 2.54, 1e-12);
+}
+
 }  // namespace
 }  // namespace drycut::interp::testing
