@@ -10,6 +10,7 @@
 // the workpiece system, then mapped as a whole); the tool length along the plane normal is added
 // to the tip (docs/controller-state.md "Tools and offsets"). With the default profile's zero G54,
 // no programmable frame and a length-0 tool the elements equal the programmed coordinates.
+#include <vector>
 #include <array>
 #include <set>
 #include <string>
@@ -168,9 +169,10 @@ class Interpreter {
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
   // A swivel head's rotation of the tool (TCOABS/TCOFR with swivel_kinematics "head").
   Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
-  std::array<Frame, kSettableFrames> settable_frames_;  // $P_UIFR
+  // On the heap (~46 KB for the 100 frames): an Interpreter on the stack stays small.
+  std::vector<Frame> settable_frames_ = std::vector<Frame>(kSettableFrames);  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};
-  std::array<FrameComponents, kSettableFrames> settable_components_;  // what $P_UIFR[n, ax, TR] writes
+  std::vector<FrameComponents> settable_components_ = std::vector<FrameComponents>(kSettableFrames);  // $P_UIFR[n, ax, TR]
 };
 
 }  // namespace drycut::interp

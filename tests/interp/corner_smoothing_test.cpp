@@ -226,7 +226,9 @@ TEST(CornerSmoothing, ToleranceWordsAreModelledAndOnlyOtolAndG644Warn) {
   ASSERT_EQ(warned.size(), 2u);
   EXPECT_NE(warned[0].find("OTOL"), std::string::npos) << warned[0];
   EXPECT_NE(warned[1].find("G644"), std::string::npos) << warned[1];
-  const auto& e = run->sink.motions().back();
+  const auto motions = run->sink.motions();  // a copy: motions() returns a new vector
+  ASSERT_FALSE(motions.empty());
+  const auto& e = motions.back();
   EXPECT_DOUBLE_EQ(e.smoothing.ctol_mm, 0.01);
   EXPECT_DOUBLE_EQ(e.smoothing.atol_mm[0], 0.02);
   EXPECT_DOUBLE_EQ(e.smoothing.atol_mm[1], -1.0);
