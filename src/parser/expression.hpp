@@ -34,7 +34,7 @@ enum class Function : uint8_t {
   StrLen, Index, RIndex, MIndex, SubStr, ToUpper, ToLower, Number, IsNumber, Sprint, AxName,
   AxString,
   // Answered by the program's environment (variables, tools, frames)
-  IsVar, IsFile, GetT, FrameFunction,
+  IsVar, IsFile, GetT, FrameFunction, StringIs, Spindle,
   // Position modes: only as the whole value of an address
   AbsoluteMode,     // AC(x)
   IncrementalMode,  // IC(x)

@@ -147,12 +147,13 @@ class Evaluator {
       case Function::StrLen: case Function::Index: case Function::RIndex: case Function::MIndex:
       case Function::SubStr: case Function::ToUpper: case Function::ToLower: case Function::Number:
       case Function::IsNumber: case Function::Sprint: case Function::AxName: case Function::AxString:
-      case Function::IsVar: case Function::IsFile: case Function::GetT: case Function::FrameFunction: {
+      case Function::IsVar: case Function::IsFile: case Function::GetT: case Function::FrameFunction:
+      case Function::StringIs: case Function::Spindle: {
         std::vector<Value> args;
         args.reserve(n.b);
         for (uint32_t k = 0; k < n.b; ++k) args.push_back(eval(pool_.args[n.a + k]));
         if (n.func == Function::IsVar || n.func == Function::IsFile || n.func == Function::GetT ||
-            n.func == Function::FrameFunction)
+            n.func == Function::FrameFunction || n.func == Function::StringIs || n.func == Function::Spindle)
           return vars_.environment_function(n, args);
         return string_function(n.func, args, n.column);
       }

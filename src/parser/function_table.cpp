@@ -42,6 +42,8 @@ constexpr std::array kFunctions{
     FunctionInfo{"AXSTRING", F::AxString, 1, 1, "the name of an axis as a string"},
     FunctionInfo{"ISVAR", F::IsVar, 1, 1, "TRUE when the string names a known variable"},
     FunctionInfo{"ISFILE", F::IsFile, 1, 1, "TRUE when a program file of that name is in drycut's folders"},
+    FunctionInfo{"STRINGIS", F::StringIs, 1, 1, "what the language knows a name as: 0, 2xx (201 address ... 211 LUD), 400"},
+    FunctionInfo{"SPI", F::Spindle, 1, 1, "the axis of spindle n (SP<n>), for $AA_S[SPI(1)] and axis-indexed words"},
     FunctionInfo{"GETT", F::GetT, 1, 2, "GETT(name[, duplo]): T number of a named tool"},
     FunctionInfo{"CTRANS", F::FrameFunction, 0, 30, "frame with translations"},
     FunctionInfo{"CROT", F::FrameFunction, 0, 30, "frame with rotations"},

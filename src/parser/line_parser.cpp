@@ -492,8 +492,15 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     ++pos_;
     if (peek().kind != TokenKind::String && peek().kind != TokenKind::Name)
       throw LineError(12080, peek().column, "program name expected after CALL");
-    out.call_name = peek().text;
     out.target.column = peek().column;
+    if (peek(1).kind == TokenKind::Concat || peek(1).kind == TokenKind::LBracket) {
+      // A computed name: CALL "L" << R10, CALL NAMES[2] (Job Planning, "Indirect subprogram
+      // call"): any STRING expression; evaluated when the line runs.
+      out.target.expr = expression(out);
+      expect_end();
+      return true;
+    }
+    out.call_name = peek().text;
     ++pos_;
     // Optional passes: CALL "SUB" P3
     int64_t passes = 0;

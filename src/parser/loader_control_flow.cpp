@@ -77,9 +77,10 @@ void ProgramLoader::execute_control() {
     case Statement::EndWhile: {
       expect_top(Statement::While);
       const LinePosition head = stack.back().head;
+      const LinePosition after = f.reader.tell();
       stack.pop_back();
       f.reader.seek(head);  // the WHILE line evaluates its condition again
-      check_endless_loop();
+      if (check_endless_loop()) f.reader.seek(after);  // the awaited input came: the loop ends
       return;
     }
     case Statement::For: {
@@ -126,17 +127,26 @@ void ProgramLoader::execute_control() {
     case Statement::Until:
       expect_top(Statement::Repeat);
       if (eval(parsed_.condition) == 0.0) {
+        const LinePosition after = f.reader.tell();
         f.reader.seek(stack.back().body);
-        check_endless_loop();
+        if (check_endless_loop()) {  // the awaited input came: the loop ends
+          f.reader.seek(after);
+          stack.pop_back();
+        }
       } else {
         stack.pop_back();
       }
       return;
-    case Statement::EndLoop:
+    case Statement::EndLoop: {
       expect_top(Statement::Loop);
+      const LinePosition after = f.reader.tell();
       f.reader.seek(stack.back().body);
-      check_endless_loop();
+      if (check_endless_loop()) {  // it waits for an input (and jumps out when it comes)
+        f.reader.seek(after);
+        stack.pop_back();
+      }
       return;
+    }
     default:
       return;
   }
@@ -217,7 +227,8 @@ void ProgramLoader::jump_to_start() {
   }
   f.control.clear();
   f.reader.seek(first);
-  check_endless_loop();
+  if (check_endless_loop())
+    raise(990004, "GOTOS back to the start while waiting for " + system_variables_.last_input_read(), 0);
 }
 
 void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number,
@@ -258,19 +269,27 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
   if (direction != JumpDirection::Forward) {
     std::optional<LinePosition> found;
     if (!label.empty()) {
-      if (auto it = f.labels.find(label); it != f.labels.end() && it->second.line < from.line) found = it->second;
+      if (auto it = f.labels.find(label); it != f.labels.end() && it->second.line <= from.line) found = it->second;
     }
     if (!found) {
+      // The jumping block itself is a target too: WAIT: IF $A_IN[1]==0 GOTOB WAIT.
       f.reader.seek(LinePosition{});
-      while (scan_line() && position_.line < from.line)
+      while (scan_line() && position_.line <= from.line)
         if (matches()) found = position_;
     }
     if (found) {
       // Structures that start at or after the target are left (and entered again later).
       auto& stack = f.control;
-      while (!stack.empty() && stack.back().head.line >= found->line) stack.pop_back();
+      const size_t depth = stack.size();
+      size_t kept = depth;
+      while (kept > 0 && stack[kept - 1].head.line >= found->line) --kept;
+      std::vector<ControlFrame> left(stack.begin() + static_cast<std::ptrdiff_t>(kept), stack.end());
+      stack.resize(kept);
       f.reader.seek(*found);
-      check_endless_loop();
+      if (check_endless_loop()) {  // the awaited input came: the jump back is not taken
+        stack.insert(stack.end(), left.begin(), left.end());
+        f.reader.seek(after);
+      }
       return;
     }
   }
@@ -401,21 +420,32 @@ void ProgramLoader::loop_state(std::string& out) const {
   put(macros_.size());
 }
 
-void ProgramLoader::check_endless_loop() {
+bool ProgramLoader::check_endless_loop() {
   // A big state (large arrays) is compared only every state-size/1 KiB lines, so that the guard
   // costs at most about 1 KiB of copying per line executed; states up to 1 KiB are compared at
   // every jump. Skipping visits never gives a false alarm, and a loop is still found: the visits
   // that are checked form a deterministic sequence too, so they repeat as well.
   constexpr uint64_t kStateBytesPerLine = 1024;
-  if (steps_ < next_loop_check_) return;
+  if (steps_ < next_loop_check_) return false;
   const Frame& f = *frames_.back();
   // The site: where the jump goes, in which program at which depth.
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
   loop_state(loop_state_);
   next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
-  if (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads()))
-    raise(990004, "back at line " + std::to_string(f.reader.tell().line) +
-                      " with every variable unchanged", 0);
+  switch (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads(), system_variables_.input_reads())) {
+    case LoopGuard::Repeat::No:
+      return false;
+    case LoopGuard::Repeat::Endless:
+      raise(990004, "back at line " + std::to_string(f.reader.tell().line) + " with every variable unchanged", 0);
+    case LoopGuard::Repeat::WaitsOnInput:
+      // On the machine the PLC or the process changes the input and the wait ends; a dry run
+      // has neither, so the wait ends at once and takes no time (docs/controller-state.md).
+      warn(990014, "loop waits for " + system_variables_.last_input_read() +
+                       " (give it a value in the profile's machine_data to model the signal)",
+           0);
+      return true;
+  }
+  return false;
 }
 
 bool ProgramLoader::end_of_repeat_section(Frame& f) {

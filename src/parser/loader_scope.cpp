@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "parser/ascii_case.hpp"
 #include "parser/line_error.hpp"
 #include "parser/loader_frame.hpp"
 #include "parser/program_files.hpp"
+#include "parser/stringis.hpp"
 
 namespace drycut::parser {
 
@@ -108,6 +110,22 @@ Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span
       // drycut's file system is its folders (main program, search path, standard cycles).
       if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "ISFILE needs a file name as a string");
       return Value(l.files_->find(normalize_program_name(args[0].text)) ? 1.0 : 0.0);
+    }
+    case Function::StringIs: {
+      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "STRINGIS needs a name as a string");
+      const std::string name = upper_ascii(args[0].text);
+      StringIsContext context;
+      context.is_macro = [&](std::string_view n) { return l.macros_.count(std::string(n)) > 0; };
+      context.is_local_variable = [&](std::string_view n) { return l.frames_.back()->locals.find(n) != nullptr; };
+      context.is_global_variable = [&](std::string_view n) { return l.globals_.find(n) != nullptr; };
+      context.is_program_file = [&](std::string_view n) { return l.files_->find(normalize_program_name(std::string(n))).has_value(); };
+      return Value(static_cast<double>(stringis_code(name, context)));
+    }
+    case Function::Spindle: {
+      // SPI(n) (Job Planning, "SPI"): the axis name of spindle n; drycut names spindles SP<n>.
+      if (args.empty() || !args[0].is_number() || args[0].number < 1 || args[0].number != std::trunc(args[0].number))
+        throw LineError(12150, call.column, "SPI needs a spindle number 1, 2 ...");
+      return Value::of_axis("SP" + std::to_string(static_cast<int64_t>(args[0].number)));
     }
     case Function::GetT: {
       if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");

@@ -2,21 +2,24 @@
 
 namespace drycut::parser {
 
-bool LoopGuard::repeats(uint64_t site, const std::string& state, uint64_t reads) {
+LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, uint64_t reads,
+                                     uint64_t input_reads) {
   constexpr size_t kMaxSites = 4096;  // bounded memory for programs with very many loops
   auto it = sites_.find(site);
   if (it == sites_.end()) {
-    if (sites_.size() >= kMaxSites) return false;
+    if (sites_.size() >= kMaxSites) return Repeat::No;
     it = sites_.emplace(site, Record{}).first;
   }
   Record& r = it->second;
-  if (r.visits > 0 && r.reads == reads && r.state == state) return true;
+  if (r.visits > 0 && r.reads == reads && r.state == state)
+    return r.input_reads == input_reads ? Repeat::Endless : Repeat::WaitsOnInput;
   if (++r.visits == r.next_save) {
     r.state = state;
     r.reads = reads;
+    r.input_reads = input_reads;
     r.next_save *= 2;
   }
-  return false;
+  return Repeat::No;
 }
 
 }  // namespace drycut::parser

@@ -11,6 +11,11 @@
 // one saved at that site; the saved state is renewed at the 1st, 2nd, 4th, 8th ... visit, so a
 // cycle of any length L through the site is found within about 2L visits, with one saved state
 // per site. States are compared byte for byte (no hash collisions).
+//
+// A loop whose repeating stretch read a digital/analog input or PLC datum ($A_IN, $A_DBB ...)
+// is not endless on the machine: it waits for the PLC or the process to change that signal
+// (WHILE $A_IN[3]==0 ENDWHILE). The guard tells such a wait apart (Repeat::WaitsOnInput) by
+// the count of input reads between the saved visit and this one.
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -19,14 +24,17 @@ namespace drycut::parser {
 
 class LoopGuard {
  public:
-  // True when `state` at `site` equals the saved one and no interpreter state was read since
-  // (`reads` is a running count of such reads).
-  bool repeats(uint64_t site, const std::string& state, uint64_t reads);
+  enum class Repeat : uint8_t { No, Endless, WaitsOnInput };
+  // Endless (or WaitsOnInput) when `state` at `site` equals the saved one and no interpreter
+  // state was read since (`reads` is a running count of such reads); WaitsOnInput when inputs
+  // were read since (`input_reads`, a running count too).
+  Repeat repeats(uint64_t site, const std::string& state, uint64_t reads, uint64_t input_reads);
 
  private:
   struct Record {
     std::string state;
     uint64_t reads = 0;
+    uint64_t input_reads = 0;
     uint64_t visits = 0;
     uint64_t next_save = 1;
   };

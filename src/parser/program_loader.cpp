@@ -198,7 +198,11 @@ bool ProgramLoader::execute_line(Block& out) {
         // CALL takes the program name from a STRING variable when one has that name
         // (PGA Job Planning, "Indirect subprogram call (CALL)").
         std::string name(parsed_.call_name);
-        if (const Variable* v = find_variable(name); v && v->type() == DataType::String && v->rank() == 0)
+        if (parsed_.target.expr != kNoExpr) {
+          const Value v = eval_value(parsed_.target.expr);
+          if (!v.is_text()) throw LineError(12150, parsed_.target.column, "CALL needs a program name as a string");
+          name = v.text;
+        } else if (const Variable* v = find_variable(name); v && v->type() == DataType::String && v->rank() == 0)
           name = v->get(v->element({}, parsed_.target.column)).text;
         call_program(name, passes, parsed_.target.column);
         return false;

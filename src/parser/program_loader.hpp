@@ -136,7 +136,9 @@ class ProgramLoader {
   void execute_repeat_section();
   bool end_of_repeat_section(Frame& f);
   // At every backward jump: alarm 990004 when the loader is back in a state it had here.
-  void check_endless_loop();
+  // After a backward jump: raises 990004 when the loader is back in a state it had (an endless
+  // loop); true when the repeating loop reads inputs (it waits for them: the caller leaves it).
+  bool check_endless_loop();
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to_start();

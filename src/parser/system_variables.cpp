@@ -63,8 +63,12 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   }
   if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
   if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
-  if (auto it = values_.find(key); it != values_.end()) return {Value(it->second), false};
   const SystemVariableClass c = classify_system_variable(name);
+  if (c == SystemVariableClass::InputOutput) {
+    ++input_reads_;
+    last_input_ = key;
+  }
+  if (auto it = values_.find(key); it != values_.end()) return {Value(it->second), false};
   if (view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) {
     ++view_reads_;
     if (auto v = view_->read_system_variable(name, indices)) return {*v, false};

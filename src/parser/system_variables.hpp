@@ -60,6 +60,10 @@ class SystemVariables {
   void append_state(std::string& out) const;
   // How many values were read from the interpreter so far.
   uint64_t view_reads() const { return view_reads_; }
+  // How many inputs and PLC data ($A_IN, $A_DBB ..., not written by the program) were read so
+  // far, and the last one read ("$A_IN[3]"): a loop that repeats while reading them waits.
+  uint64_t input_reads() const { return input_reads_; }
+  const std::string& last_input_read() const { return last_input_; }
 
  private:
   MachineDataMap values_;                                   // machine data, I/O (from the profile)
@@ -68,6 +72,8 @@ class SystemVariables {
   std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
   const ControllerStateView* view_ = nullptr;
   mutable uint64_t view_reads_ = 0;
+  mutable uint64_t input_reads_ = 0;
+  mutable std::string last_input_;
 };
 
 }  // namespace drycut::parser

@@ -189,6 +189,15 @@ TEST_F(Loader, StepLimitStopsEndlessLoop) {
   EXPECT_EQ(alarm_of("L: X1\nGOTOB L\n", o), 990004);
 }
 
+TEST_F(Loader, LoopWaitingForAnInputEndsAtOnce) {
+  // The same loop without an input read is endless (990004); reading $A_IN makes it a wait
+  // that is left at the first repeat, each form by not taking its jump back.
+  EXPECT_EQ(alarm_of("R1=0\nWHILE R1==0\nENDWHILE\nM30\n"), 990004);
+  EXPECT_EQ(xs(run("WHILE $A_IN[1]==0\nENDWHILE\nX1\nW: IF $A_IN[2]==0 GOTOB W\nX2\n"
+                   "REPEAT\nX3\nUNTIL $A_IN[3]==1\nX4\nM30\n")),
+            (std::vector<double>{1, 2, 3, 3, 4}));  // REPEAT's body runs twice before the repeat is seen
+}
+
 TEST_F(Loader, SkipLevels) {
   LoaderOptions o;
   o.skip_levels_active[0] = true;
