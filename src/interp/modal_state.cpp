@@ -83,6 +83,10 @@ constexpr std::array<std::string_view, 12> kNoPathEffect{
 }  // namespace
 
 bool ModalState::apply_code(std::string_view name) {
+  if (const auto mode = channel_diameter_mode(name)) {  // G group 29
+    diameter.channel = *mode;
+    return true;
+  }
   for (const auto& [code, set] : kCodes) {
     if (code == name) {
       set(*this);
@@ -96,6 +100,12 @@ bool ModalState::apply_code(std::string_view name) {
 
 ModalState reset_state(const machine::MachineProfile& profile) {
   ModalState state;
+  // MD20100: the transverse axis, which the channel's DIAMON/DIAM90 act on and G96 refers to.
+  for (int i = 0; i < 3; ++i)
+    if (!profile.diameter_axis.empty() && profile.axes[static_cast<size_t>(i)].name == profile.diameter_axis) {
+      state.diameter.transverse_axis = i;
+      state.cutting_speed_axis = i;
+    }
   for (const auto& code : profile.reset_gcodes) {
     if (code.size() > 1 && code[0] == 'G' && code.find_first_not_of("0123456789", 1) == std::string::npos &&
         code.size() <= 4) {

@@ -173,7 +173,7 @@ class ProgramLoader::BlockBuilder {
       // OVR=50, CTOL=0.01: valid settings drycut does not model.
       const Support s = command_support(item.name);
       if (s == Support::NotModelled) {
-        l_.warn_not_modelled(std::string(item.name) + "=", item.column);
+        l_.warn_not_modelled(not_modelled_assignment(item), item.column);
         return;
       }
       if (s == Support::NoEffect) return;
@@ -298,8 +298,9 @@ class ProgramLoader::BlockBuilder {
     }
     if (s == Support::NoEffect) return;
     if (s == Support::Modelled) {
-      add_command(item);
+      CommandWord& c = add_command(item);
       if (item.name == "RET") action_ = PendingAction::Return;
+      if (item.index_count > 0) c.args.emplace_back(axis_index_text(item));  // DIAMONA[X], SCC[X]
       return;
     }
     if (l_.find_variable(item.name) || is_address(item.name))
@@ -321,6 +322,29 @@ class ProgramLoader::BlockBuilder {
                                              (guess.empty() ? "" : " (did you mean " + std::string(guess) + "?)"));
     }
     set_call(item.name, item.column);
+  }
+
+  // "OVR=", "FXS[Z]= (travel to fixed stop: ...)": what a warned setting names.
+  std::string not_modelled_assignment(const Item& item) {
+    std::string text(item.name);
+    if (item.index_count == 1) {
+      const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+      text += "[" + (index.is_number() ? number_to_text(index.number) : index.text) + "]";
+    }
+    text += "=";
+    if (item.name == "FXS" || item.name == "FXST" || item.name == "FXSW")
+      text += " (travel to fixed stop: the axis is planned to the programmed end point)";
+    return text;
+  }
+
+  // The axis of NAME[axis] (AXNAME("X") and axis variables too), upper case.
+  std::string axis_index_text(const Item& item) {
+    if (item.index_count != 1) throw LineError(12410, item.column, std::string(item.name) + "[...] takes one axis");
+    const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+    if (index.kind != ValueKind::Axis && !index.is_text()) throw LineError(12150, item.column, std::string(item.name) + "[...] needs an axis");
+    std::string axis = index.text;
+    for (char& c : axis) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return axis;
   }
 
   // MCALL name(args): the loader calls it after every later block with axis motion

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "parser/command_table.hpp"
 #include "parser/expression_parser.hpp"
 #include "parser/line_error.hpp"
 
@@ -551,6 +552,11 @@ void LineParser::parse_words(ParsedLine& out) {
       item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
       item.index_first = first;
       item.kind = ItemKind::Assign;
+      if (peek().kind != TokenKind::Assign && is_axis_indexed_command(item.name)) {
+        item.kind = ItemKind::Name;  // DIAMONA[X], SCC[X]: a command with an axis, no value
+        out.items.push_back(item);
+        continue;
+      }
       if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after an array element");
       ++pos_;
       item.expr = expression(out);
