@@ -145,7 +145,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
 void Interpreter::apply_commands(BlockContext& ctx) {
   for (const auto& c : ctx.block.commands) {
     const std::string& n = c.name;
-    if (n == "ASPLINE" || n == "BSPLINE" || n == "CSPLINE" || n == "CIP" || n == "CT") {
+    if (n == "ASPLINE" || n == "BSPLINE" || n == "CSPLINE" || n == "CIP" || n == "CT" || n == "POLY") {
       ctx.motion_code = true;
       state_.apply_code(n);
     } else if (auto kind = frame_instruction_kind(n)) {
@@ -555,7 +555,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     } else {
       const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
       if (state_.thread_mode()) start_thread_block(ctx);
-      PathElement e = arc ? build_arc(ctx, programmed) : build_line(ctx, target);
+      PathElement e = arc ? build_arc(ctx, programmed)
+                      : state_.motion == MotionMode::Polynomial ? build_polynomial(ctx, target)
+                                                                : build_line(ctx, target);
       if (spline_.active()) {
         // The run ends here; ETAN takes the direction this block starts in.
         Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();

@@ -102,6 +102,7 @@ class Interpreter {
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
   PathElement build_arc(BlockContext& ctx, const Target& target);
+  PathElement build_polynomial(BlockContext& ctx, const Eigen::Vector3d& target);  // POLY (interpreter_polynomial.cpp)
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);

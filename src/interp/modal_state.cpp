@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 60> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 61> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -18,6 +18,7 @@ constexpr std::array<std::pair<std::string_view, Setter>, 60> kCodes{{
     {"ASPLINE", [](ModalState& s) { s.motion = MotionMode::ASpline; }},
     {"BSPLINE", [](ModalState& s) { s.motion = MotionMode::BSpline; }},
     {"CSPLINE", [](ModalState& s) { s.motion = MotionMode::CSpline; }},
+    {"POLY", [](ModalState& s) { s.motion = MotionMode::Polynomial; }},
     {"G17", [](ModalState& s) { s.plane = PlaneSelect::G17; }},
     {"G18", [](ModalState& s) { s.plane = PlaneSelect::G18; }},
     {"G19", [](ModalState& s) { s.plane = PlaneSelect::G19; }},
@@ -132,6 +133,7 @@ std::string_view motion_mode_name(MotionMode mode) {
     case MotionMode::ASpline: return "ASPLINE";
     case MotionMode::BSpline: return "BSPLINE";
     case MotionMode::CSpline: return "CSPLINE";
+    case MotionMode::Polynomial: return "POLY";
     case MotionMode::Thread: return "G33";
     case MotionMode::ThreadIncreasing: return "G34";
     case MotionMode::ThreadDecreasing: return "G35";

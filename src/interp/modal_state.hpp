@@ -20,7 +20,7 @@ namespace drycut::interp {
 // G group 1 (with the spline types, which are members of it on the SINUMERIK).
 enum class MotionMode {
   Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline,
-  Thread /*G33*/, ThreadIncreasing /*G34*/, ThreadDecreasing /*G35*/, Tapping /*G331*/, TappingRetract /*G332*/
+  Polynomial /*POLY*/, Thread /*G33*/, ThreadIncreasing /*G34*/, ThreadDecreasing /*G35*/, Tapping /*G331*/, TappingRetract /*G332*/
 };
 
 // G group 15: what F means.

@@ -155,6 +155,10 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     if (axis_word(item)) return;
+    if (item.name == "PO") {
+      polynomial(item);
+      return;
+    }
     if (item.name == "M" && item.index_count == 0) {  // M=QU(8), M=R10: the M function of the value
       add_m(item, 0, item.expr, 0);
       return;
@@ -322,6 +326,21 @@ class ProgramLoader::BlockBuilder {
                                              (guess.empty() ? "" : " (did you mean " + std::string(guess) + "?)"));
     }
     set_call(item.name, item.column);
+  }
+
+  // PO[X]=(end, a2 .. a5): the axis word X=end and the coefficients; PO[]=(b2 .. b4).
+  void polynomial(const Item& item) {
+    PolyWord w;
+    w.column = item.column;
+    if (item.index_count > 0) w.axis = axis_index_text(item);
+    const uint32_t most = w.axis.empty() ? 3 : 5;
+    if (item.arg_count < 1 || item.arg_count > most)
+      throw LineError(12080, item.column, w.axis.empty() ? "PO[]=(b2, b3, b4) takes 1 to 3 values"
+                                                         : "PO[" + w.axis + "]=(end, a2, a3, a4, a5) takes 1 to 5 values");
+    for (uint32_t k = 0; k < item.arg_count; ++k) w.values.push_back(l_.eval(l_.parsed_.pool.args[item.arg_first + k]));
+    if (!w.axis.empty()) out_.addresses.push_back(AddressWord{w.axis, w.values[0], ValueMode::Default, item.column});
+    out_.poly.push_back(std::move(w));
+    has_words_ = true;
   }
 
   // "OVR=", "FXS[Z]= (travel to fixed stop: ...)": what a warned setting names.

@@ -25,7 +25,7 @@ constexpr std::array kCommands{
     CommandEntry{"CDON", M},    CommandEntry{"CDOF", M},    CommandEntry{"TRANS", M},
     CommandEntry{"ATRANS", M},  CommandEntry{"SPLINEPATH", M},
     CommandEntry{"MSG", M},     CommandEntry{"RET", M},
-    CommandEntry{"POLY", M},
+    CommandEntry{"POLY", M},    CommandEntry{"POLYPATH", N},  // which axis groups POLY bends: not modelled
     CommandEntry{"COMPON", M},  CommandEntry{"COMPCURV", M}, CommandEntry{"COMPCAD", M},
     CommandEntry{"COMPOF", M},
     // Valid on the control, not modelled by drycut.

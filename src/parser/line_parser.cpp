@@ -509,6 +509,28 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
   return std::nullopt;
 }
 
+// PO[X]=(end, a2, ...) and PO[]=(b2, ...): the values are a list, as a procedure's arguments.
+void LineParser::parse_polynomial(ParsedLine& out, Item& item) {
+  ++pos_;  // PO
+  if (peek(1).kind == TokenKind::RBracket) {
+    pos_ += 2;  // "[]": the denominator
+  } else {
+    ExprIndex first = kNoExpr;
+    item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
+    item.index_first = first;
+  }
+  if (peek().kind != TokenKind::Assign || peek(1).kind != TokenKind::LParen)
+    throw LineError(12080, peek().column, "PO[axis]=(values) expected");
+  pos_ += 2;
+  item.kind = ItemKind::Assign;
+  std::array<ExprIndex, 8> values{};
+  const auto count = static_cast<uint32_t>(
+      ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, values, false, "too many polynomial values"));
+  item.arg_first = static_cast<uint32_t>(out.pool.args.size());
+  item.arg_count = count;
+  out.pool.args.insert(out.pool.args.end(), values.begin(), values.begin() + count);
+}
+
 void LineParser::parse_words(ParsedLine& out) {
   while (peek().kind != TokenKind::End) {
     const Token& t = peek();
@@ -545,6 +567,8 @@ void LineParser::parse_words(ParsedLine& out) {
       if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
       ++pos_;
       item.expr = expression(out);
+    } else if (t.text == "PO" && next.kind == TokenKind::LBracket) {
+      parse_polynomial(out, item);
     } else if (next.kind == TokenKind::LBracket) {
       // A[1,2]=..., $MA_COMPRESS_POS_TOL[X1]=..., G[8]=2, M[2]=3, S[1]=1000
       ++pos_;
