@@ -62,4 +62,31 @@ double Interpreter::dwell_in_revolutions(const BlockContext& ctx, const AddressW
   return seconds;
 }
 
+void Interpreter::warn_working_area(const BlockContext& ctx) {
+  // G25/G26 with axis words limit the working area (WALIMON): a setting, not a motion.
+  for (const AddressWord& a : ctx.block.addresses)
+    if (axis_index(a.name) >= 0 || extra_axes_.index(a.name) >= 0 || is_axis_letter_name(a.name))
+      warn_once(ctx, "G" + std::to_string(ctx.speed_limit) + " " + a.name + " (working area limitation)", a.column);
+}
+
+// G4: F<seconds>, S<revolutions> of the master or S<n>=<revolutions> of spindle n.
+void Interpreter::emit_dwell(BlockContext& ctx) {
+  PathElement e = element_template(ctx, ElementKind::Dwell);
+  const AddressWord* f = ctx.block.find_address("F");
+  const AddressWord* s = nullptr;  // S or S<n>=: revolutions of the master or of spindle n
+  for (const AddressWord& a : ctx.block.addresses)
+    if (a.name == "S" || numbered_spindle(a.name) > 0) s = &a;
+  if (f) {
+    if (f->value < 0 || f->value > kMaxDwellS)
+      raise(ctx, 12160, "dwell time must be 0..999999.999 s", f->column);
+    e.dwell_s = f->value;
+  } else if (s) {
+    e.dwell_s = dwell_in_revolutions(ctx, *s);
+  } else {
+    raise(ctx, 12080, "G4 needs F<seconds> or S<revolutions>");
+  }
+  e.label = "G4";
+  emit(std::move(e));
+}
+
 }  // namespace drycut::interp
