@@ -23,6 +23,7 @@ int motion_index(MotionMode m) {
     case MotionMode::ASpline: return 6;
     case MotionMode::BSpline: return 7;
     case MotionMode::CSpline: return 8;
+    case MotionMode::Polynomial: return 9;         // POLY
     case MotionMode::ArcTangent: return 15;
     case MotionMode::Thread: return 10;            // G33
     case MotionMode::Tapping: return 11;           // G331

@@ -99,6 +99,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
     }
     switch (code) {
       case 4: ctx.dwell = true; continue;
+      case 25: case 26: ctx.speed_limit = code; continue;
       case 9: ctx.exact_stop = true; continue;
       case 53: case 153: ctx.suppress_offsets = true; continue;
       case 110: ctx.pole = PoleReference::LastPosition; continue;
@@ -144,7 +145,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
 void Interpreter::apply_commands(BlockContext& ctx) {
   for (const auto& c : ctx.block.commands) {
     const std::string& n = c.name;
-    if (n == "ASPLINE" || n == "BSPLINE" || n == "CSPLINE" || n == "CIP" || n == "CT") {
+    if (n == "ASPLINE" || n == "BSPLINE" || n == "CSPLINE" || n == "CIP" || n == "CT" || n == "POLY") {
       ctx.motion_code = true;
       state_.apply_code(n);
     } else if (auto kind = frame_instruction_kind(n)) {
@@ -169,6 +170,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       orient_tool(ctx, n, c.column);
     } else if (apply_axis_command(ctx, c)) {
       // FGROUP, WAITP, WAITS (interpreter_axes.cpp)
+    } else if (apply_turning_command(ctx, c)) {
+      // diameter programming, SCC (interpreter_turning.cpp)
     } else if (!state_.apply_code(n)) {
       warn_once(ctx, n, c.column);
     }
@@ -255,12 +258,18 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
 
 void Interpreter::apply_spindle_speed(BlockContext& ctx, const AddressWord& a) {
   // S, or S<n>= the speed of spindle n (Fundamentals, "Spindle speed S"): the master's is S.
+  if (ctx.dwell) return;  // G4 S<rev>, G4 S2=<rev>
+  if (a.value < 0) raise(ctx, 12160, a.name + " must not be negative", a.column);
   if (const int spindle = numbered_spindle(a.name); spindle > 0 && spindle != profile_.master_spindle) {
     warn_once(ctx, "spindle " + std::to_string(spindle) + " (only the master spindle is simulated)", a.column);
+    // Its speed is kept for G4 S<n>= (dwell in that spindle's revolutions).
+    if (!ctx.speed_limit) other_spindles_[spindle].rpm = a.value;
     return;
   }
-  if (ctx.dwell) return;  // G4 S<rev>
-  if (a.value < 0) raise(ctx, 12160, a.name + " must not be negative", a.column);
+  if (ctx.speed_limit) {
+    set_speed_limit(ctx, a);
+    return;
+  }
   state_.spindle_rpm = a.value;
 }
 
@@ -316,6 +325,7 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
     const bool spindle_function = (m.code >= 3 && m.code <= 5) || m.code == 19 || m.code == 70;
     if (m.extension > 0 && m.extension != profile_.master_spindle && spindle_function) {
       warn_once(ctx, "spindle " + std::to_string(m.extension) + " (only the master spindle is simulated)", m.column);
+      if (m.code >= 3 && m.code <= 5) other_spindles_[m.extension].turning = m.code != 5;
       continue;
     }
     switch (m.code) {
@@ -373,25 +383,27 @@ double Interpreter::spindle_speed(const BlockContext& ctx) {
   if (!state_.constant_cutting_speed || tapping) {
     // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point);
     // the warning only where the speed times the path (G95, threads, tapping).
-    if (state_.spindle_rpm > profile_.max_spindle_speed_rpm) {
+    const double rpm = limit_to_g25_g26(ctx, state_.spindle_rpm, false);
+    if (rpm > profile_.max_spindle_speed_rpm) {
       if (state_.feed_mode != FeedMode::PerRevolution && !state_.thread_mode()) return profile_.max_spindle_speed_rpm;
-      const std::string what = "S" + std::to_string(static_cast<long>(state_.spindle_rpm)) +
+      const std::string what = "S" + std::to_string(static_cast<long>(rpm)) +
                                " above the spindle's maximum (MD35100): limited to " +
                                std::to_string(static_cast<long>(profile_.max_spindle_speed_rpm)) + " rpm";
       if (warned_.insert(what).second)
         diagnostics_.warn(kValueLimited, what, {ctx.file_name(), ctx.block.line, 0}, ctx.block.text);
       return profile_.max_spindle_speed_rpm;
     }
-    return state_.spindle_rpm;
+    return rpm;
   }
   // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
-  // the diameter 2|X| (work coordinates) at the block start, limited by LIMS and MD35100.
+  // the diameter 2|X| (work coordinates; X: the SCC axis) at the block start, limited by LIMS and MD35100.
   warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
   const double speed_mm_min = state_.spindle_rpm * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
-  const double diameter = 2.0 * std::abs(block_frame(ctx).to_inner(position_ - length_applied_).x());
+  // The radius is the position of the SCC axis (default: the transverse axis of MD20100, else X).
+  const double diameter = 2.0 * std::abs(block_frame(ctx).to_inner(position_ - length_applied_)[state_.cutting_speed_axis]);
   double rpm = diameter > 1e-9 ? speed_mm_min / (std::numbers::pi * diameter) : profile_.max_spindle_speed_rpm;
   if (state_.spindle_speed_limit > 0) rpm = std::min(rpm, state_.spindle_speed_limit);
-  return std::min(rpm, profile_.max_spindle_speed_rpm);
+  return std::min(limit_to_g25_g26(ctx, rpm, true), profile_.max_spindle_speed_rpm);
 }
 
 double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Vector3d& chord) {
@@ -500,6 +512,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     apply_frame_instruction(ctx);
     return;
   }
+  if (ctx.speed_limit) {
+    warn_working_area(ctx);
+    return;
+  }
   if (ctx.pole) {
     define_pole(ctx);
     return;
@@ -536,7 +552,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     } else {
       const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
       if (state_.thread_mode()) start_thread_block(ctx);
-      PathElement e = arc ? build_arc(ctx, programmed) : build_line(ctx, target);
+      PathElement e = arc ? build_arc(ctx, programmed)
+                      : state_.motion == MotionMode::Polynomial ? build_polynomial(ctx, target)
+                                                                : build_line(ctx, target);
       if (spline_.active()) {
         // The run ends here; ETAN takes the direction this block starts in.
         Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
@@ -566,26 +584,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (quota_.active() && !quota_.record(has_axis))
     raise(ctx, 990001, std::to_string(quota_.in_window()) + " of 10, " + std::to_string(quota_.required()) + " required");
 
-  if (ctx.dwell) {
-    PathElement e = element_template(ctx, ElementKind::Dwell);
-    const AddressWord* f = ctx.block.find_address("F");
-    const AddressWord* s = ctx.block.find_address("S");
-    if (f) {
-      if (f->value < 0 || f->value > kMaxDwellS)
-        raise(ctx, 12160, "dwell time must be 0..999999.999 s", f->column);
-      e.dwell_s = f->value;
-    } else if (s) {
-      const double rpm = spindle_speed(ctx);
-      if (rpm <= 0) raise(ctx, 12160, "G4 S needs a turning spindle", s->column);
-      e.dwell_s = s->value * 60.0 / rpm;
-      if (!(e.dwell_s >= 0 && e.dwell_s <= kMaxDwellS))
-        raise(ctx, 12160, "dwell time must be 0..999999.999 s", s->column);
-    } else {
-      raise(ctx, 12080, "G4 needs F<seconds> or S<revolutions>");
-    }
-    e.label = "G4";
-    emit(std::move(e));
-  }
+  if (ctx.dwell) emit_dwell(ctx);
   if (ctx.tool_change) change_tool(ctx);
   if (ctx.preprocessing_stop) {
     PathElement e = element_template(ctx, ElementKind::Stop);

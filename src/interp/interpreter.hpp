@@ -12,6 +12,7 @@
 // no programmable frame and a length-0 tool the elements equal the programmed coordinates.
 #include <vector>
 #include <array>
+#include <map>
 #include <set>
 #include <string>
 
@@ -87,6 +88,8 @@ class Interpreter {
   bool note_extra_axis_word(BlockContext& ctx, const parser::AddressWord& word);
   bool apply_axis_command(BlockContext& ctx, const parser::CommandWord& command);
   void apply_axis_words(BlockContext& ctx);
+  // DIAMON ... DIAMCYCOF, DIAMONA[ax] ... DIAMCHANA[ax], DIAMCHAN, SCC[ax] (interpreter_turning.cpp).
+  bool apply_turning_command(BlockContext& ctx, const parser::CommandWord& command);
   void add_positioning(BlockContext& ctx, const parser::AxisWord& word);
   void add_spindle_positioning(BlockContext& ctx, const parser::AxisWord& word);
   std::vector<ExtraAxisMove> take_extra_axis_moves(BlockContext& ctx);
@@ -99,6 +102,7 @@ class Interpreter {
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
   PathElement build_arc(BlockContext& ctx, const Target& target);
+  PathElement build_polynomial(BlockContext& ctx, const Eigen::Vector3d& target);  // POLY (interpreter_polynomial.cpp)
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement element);
@@ -141,6 +145,14 @@ class Interpreter {
   // "S2" -> 2 (the spindle of a numbered speed address S<n>=), 0 for any other name.
   static int numbered_spindle(std::string_view name);
   void apply_spindle_speed(BlockContext& ctx, const parser::AddressWord& a);  // S, S<n>=
+  // G25 S / G26 S: the master spindle's lower / upper speed limit (interpreter_spindle.cpp).
+  void set_speed_limit(const BlockContext& ctx, const parser::AddressWord& a);
+  // A spindle speed limited by G25/G26 (warning 990013 where a limit acts).
+  double limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed);
+  void emit_dwell(BlockContext& ctx);                       // G4 F / S / S<n>=
+  void warn_working_area(const BlockContext& ctx);          // G25/G26 with axis words
+  // G4 S<rev> / G4 S<n>=<rev>: the dwell in seconds.
+  double dwell_in_revolutions(const BlockContext& ctx, const parser::AddressWord& s);
 
   const machine::MachineProfile& profile_;
   ElementSink& sink_;
@@ -167,6 +179,15 @@ class Interpreter {
   std::set<std::string> warned_;
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
+  // G25 S / G26 S (SD43210 SPIND_MIN_VELO_G25, SD43220 SPIND_MAX_VELO_G26), 0: no limit.
+  double spindle_min_rpm_ = 0.0;
+  double spindle_max_rpm_ = 0.0;
+  // Spindles other than the master: not simulated, their programmed speed is kept for G4 S<n>=.
+  struct OtherSpindle {
+    double rpm = 0.0;
+    bool turning = true;  // false after M<n>=5 (started before the program: assumed turning)
+  };
+  std::map<int, OtherSpindle> other_spindles_;
   // A swivel head's rotation of the tool (TCOABS/TCOFR with swivel_kinematics "head").
   Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
   // On the heap (~46 KB for the 100 frames): an Interpreter on the stack stays small.

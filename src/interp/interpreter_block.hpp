@@ -104,6 +104,7 @@ struct Interpreter::BlockContext {
   bool exact_stop = false;      // G9
   bool suppress_offsets = false;  // G53, G153, SUPA: no frame for this block
   bool dwell = false;           // G4
+  int speed_limit = 0;          // G25 / G26: S is the lower / upper spindle speed limit
   bool tool_change = false;     // M6
   std::optional<StopKind> stop;  // M0, M1, M2, M30
   bool preprocessing_stop = false;  // STOPRE

@@ -91,10 +91,13 @@ void Interpreter::define_pole(const BlockContext& ctx) {
   const double unit = state_.inch ? kMmPerInch : 1.0;
   const PlaneIndices axes = state_.plane_indices();
   PoleWords cartesian;
+  // G111 gives the pole absolutely, G110/G112 relative to a point: diameter values as positions.
+  const bool relative = *ctx.pole != PoleReference::WorkpieceZero;
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
-    if (i == axes.first) cartesian.first = a.value * unit;
-    if (i == axes.second) cartesian.second = a.value * unit;
+    const double value = a.value * unit * state_.diameter.position_factor(i, relative);
+    if (i == axes.first) cartesian.first = value;
+    if (i == axes.second) cartesian.second = value;
   }
   const Vector3d here = block_frame(ctx).to_inner(position_);
   state_.polar.define_pole(*ctx.pole, cartesian, polar_words(ctx), axes, here);
@@ -141,7 +144,8 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
       const int i = axis_index(a.name);
       if (i < 0) continue;
       const bool incremental = is_incremental(a);
-      t.machine[i] = incremental ? position_[i] + a.value * unit : a.value * unit + frame.offset()[i];
+      const double value = a.value * unit * state_.diameter.position_factor(i, incremental);
+      t.machine[i] = incremental ? position_[i] + value : value + frame.offset()[i];
       t.machine[i] += length[i] - (incremental ? length_applied_[i] : 0.0);
       t.length_after[i] = length[i];
     }
@@ -155,7 +159,9 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
     if (i < 0) continue;
-    t.workpiece[i] = is_incremental(a) ? t.workpiece[i] + a.value * unit : a.value * unit;
+    const bool incremental = is_incremental(a);
+    const double value = a.value * unit * state_.diameter.position_factor(i, incremental);
+    t.workpiece[i] = incremental ? t.workpiece[i] + value : value;
     t.length_after[i] = length[i];
   }
   if (polar.any()) t.workpiece = state_.polar.target(polar, state_.plane_indices(), t.workpiece);

@@ -48,7 +48,9 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
     for (int i = 0; i < 3; ++i) {
       if (const AddressWord* a = ctx.block.find_address(names[i])) {
         any = true;
-        mid[i] = is_incremental(*a) ? start[i] + a->value * unit : a->value * unit + shift[i];
+        const bool incremental = is_incremental(*a);
+        const double value = a->value * unit * state_.diameter.position_factor(i, incremental);
+        mid[i] = incremental ? start[i] + value : value + shift[i];
       }
     }
     if (!any) raise(ctx, 14040, "CIP needs an intermediate point I1/J1/K1");
@@ -74,8 +76,11 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
     for (int i = 0; i < 3; ++i) {
       if (const AddressWord* a = ctx.block.find_address(names[i])) {
         has_center = true;
-        // I/J/K are relative to the start point unless written I=AC(..).
-        center[i] = a->mode == ValueMode::Absolute ? a->value * unit + shift[i] : start[i] + a->value * unit;
+        // I/J/K are relative to the start point unless written I=AC(..). Under diameter
+        // programming an absolute centre is a diameter, a relative one a radius (P1).
+        center[i] = a->mode == ValueMode::Absolute
+                        ? a->value * unit * state_.diameter.position_factor(i, false) + shift[i]
+                        : start[i] + a->value * unit;
       }
     }
     if (!has_center && polar_words(ctx).any()) {

@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 60> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 61> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -18,6 +18,7 @@ constexpr std::array<std::pair<std::string_view, Setter>, 60> kCodes{{
     {"ASPLINE", [](ModalState& s) { s.motion = MotionMode::ASpline; }},
     {"BSPLINE", [](ModalState& s) { s.motion = MotionMode::BSpline; }},
     {"CSPLINE", [](ModalState& s) { s.motion = MotionMode::CSpline; }},
+    {"POLY", [](ModalState& s) { s.motion = MotionMode::Polynomial; }},
     {"G17", [](ModalState& s) { s.plane = PlaneSelect::G17; }},
     {"G18", [](ModalState& s) { s.plane = PlaneSelect::G18; }},
     {"G19", [](ModalState& s) { s.plane = PlaneSelect::G19; }},
@@ -83,6 +84,10 @@ constexpr std::array<std::string_view, 12> kNoPathEffect{
 }  // namespace
 
 bool ModalState::apply_code(std::string_view name) {
+  if (const auto mode = channel_diameter_mode(name)) {  // G group 29
+    diameter.channel = *mode;
+    return true;
+  }
   for (const auto& [code, set] : kCodes) {
     if (code == name) {
       set(*this);
@@ -96,6 +101,12 @@ bool ModalState::apply_code(std::string_view name) {
 
 ModalState reset_state(const machine::MachineProfile& profile) {
   ModalState state;
+  // MD20100: the transverse axis, which the channel's DIAMON/DIAM90 act on and G96 refers to.
+  for (int i = 0; i < 3; ++i)
+    if (!profile.diameter_axis.empty() && profile.axes[static_cast<size_t>(i)].name == profile.diameter_axis) {
+      state.diameter.transverse_axis = i;
+      state.cutting_speed_axis = i;
+    }
   for (const auto& code : profile.reset_gcodes) {
     if (code.size() > 1 && code[0] == 'G' && code.find_first_not_of("0123456789", 1) == std::string::npos &&
         code.size() <= 4) {
@@ -122,6 +133,7 @@ std::string_view motion_mode_name(MotionMode mode) {
     case MotionMode::ASpline: return "ASPLINE";
     case MotionMode::BSpline: return "BSPLINE";
     case MotionMode::CSpline: return "CSPLINE";
+    case MotionMode::Polynomial: return "POLY";
     case MotionMode::Thread: return "G33";
     case MotionMode::ThreadIncreasing: return "G34";
     case MotionMode::ThreadDecreasing: return "G35";

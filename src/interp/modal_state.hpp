@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "interp/diameter_programming.hpp"
 #include "interp/frame_chain.hpp"
 #include "interp/path_element.hpp"
 #include "interp/polar_coordinates.hpp"
@@ -19,7 +20,7 @@ namespace drycut::interp {
 // G group 1 (with the spline types, which are members of it on the SINUMERIK).
 enum class MotionMode {
   Rapid, Linear, ArcCw, ArcCcw, ArcThroughPoint, ArcTangent, ASpline, BSpline, CSpline,
-  Thread /*G33*/, ThreadIncreasing /*G34*/, ThreadDecreasing /*G35*/, Tapping /*G331*/, TappingRetract /*G332*/
+  Polynomial /*POLY*/, Thread /*G33*/, ThreadIncreasing /*G34*/, ThreadDecreasing /*G35*/, Tapping /*G331*/, TappingRetract /*G332*/
 };
 
 // G group 15: what F means.
@@ -63,6 +64,8 @@ struct ModalState {
   double disc = 0.0;                  // DISC=
   double offn_mm = 0.0;            // OFFN=: contour offset added to the tool radius under G41/G42
   Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD
+  DiameterState diameter;             // DIAMON/DIAMOF/DIAM90/DIAMCYCOF, DIAMONA[ax] ... (MD20100)
+  int cutting_speed_axis = 0;         // SCC[ax]: the axis whose position is G96's radius (X..Z)
 
   // Applies one reset/program code by name ("G64", "SOFT", "BTAN", ...). Returns false if the
   // name is not a modal code this state knows (the caller decides whether that is an error).

@@ -69,6 +69,7 @@ class Importer {
     read_settable_frames();
     read_tools();
     read_swivel_kinematics();
+    read_transverse_axis();
     keep_the_rest();
   }
 
@@ -564,6 +565,21 @@ class Importer {
       }
       out_.profile.tools.push_back(tool);
     }
+  }
+
+  // MD20100 DIAMETER_AX_DEF: the control's name of the transverse geometry axis ("" none).
+  void read_transverse_axis() {
+    const MachineDatum* d = peek("$MC_DIAMETER_AX_DEF");
+    const std::string* name = d ? std::get_if<std::string>(&d->value) : nullptr;
+    if (!name || name->empty()) return;
+    for (size_t g = 0; g < 3; ++g) {
+      const std::string control_name = text_of("$MC_AXCONF_GEOAX_NAME_TAB[" + std::to_string(g) + "]").value_or(kGeometry[g]);
+      if (upper_text(control_name) != upper_text(*name)) continue;
+      out_.profile.diameter_axis = kGeometry[g];
+      out_.sources["program.diameter_ax_def"] = {written_name(*d), d->location()};
+      return;
+    }
+    out_.notes.push_back(written_name(*d) + " = \"" + *name + "\": not a geometry axis, no transverse axis imported");
   }
 
   // $TC_CARR23 of the first tool carrier: T the table turns, P the head turns (M, mixed, is not modelled).

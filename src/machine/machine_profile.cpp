@@ -102,6 +102,11 @@ void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
       r.fail("swivel_kinematics", "must be \"none\", \"table\" or \"head\" ($TC_CARR23 T/P)");
     p.swivel_kinematics = *v;
   }
+  if (auto v = r.string("diameter_ax_def")) {
+    const bool geometry_axis = std::any_of(p.axes.begin(), p.axes.end(), [&](const AxisData& a) { return a.name == *v; });
+    if (!v->empty() && !geometry_axis) r.fail("diameter_ax_def", "must name one of the path axes X, Y, Z or be empty");
+    p.diameter_axis = *v;
+  }
   if (auto v = r.string("base_unit")) {
     if (*v != "mm" && *v != "inch") r.fail("base_unit", "must be \"mm\" or \"inch\"");
     p.base_unit_inch = *v == "inch";
@@ -308,6 +313,7 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"cutting_edge_default", p.cutting_edge_default},
                      {"tool_table_complete", p.tool_table_complete},
                      {"swivel_kinematics", p.swivel_kinematics},
+                     {"diameter_ax_def", p.diameter_axis},
                      {"base_unit", p.base_unit_inch ? "inch" : "mm"}};
   json tools = json::array();
   for (const auto& t : p.tools) {

@@ -111,6 +111,9 @@ struct MachineProfile {
   // TCOABS/TCOFR warn), "table" (the table turns, the tool stays along the machine axis),
   // "head" (the head turns: after TCOABS/TCOFR the tool length acts along the swivelled axis).
   std::string swivel_kinematics = "none";
+  // MD20100 DIAMETER_AX_DEF: the geometry axis with the transverse-axis function (a lathe's X),
+  // which DIAMON/DIAM90 and G96 refer to; empty: none (a milling machine).
+  std::string diameter_axis;
   bool base_unit_inch = false;                  // MD10240 SCALING_SYSTEM_IS_METRIC = false: the base system is inch
   int tool_change_mode = 1;                     // MD22550 TOOL_CHANGE_MODE: 1 = T prepares, M6 changes; 0 = T changes
   int tool_change_m_code = 6;                   // MD22560 TOOL_CHANGE_M_CODE

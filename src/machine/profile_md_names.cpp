@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 63> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 64> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -54,6 +54,7 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 63> kNames{{
     {"cutting_edge_default", "MD20270 CUTTING_EDGE_DEFAULT"},
     {"tool_table_complete", "- (drycut)"},
     {"swivel_kinematics", "$TC_CARR23"},
+    {"diameter_ax_def", "MD20100 DIAMETER_AX_DEF"},
     {"base_unit", "MD10240 SCALING_SYSTEM_IS_METRIC"},
     {"radius", "$TC_DP6 (tool radius)"},
     {"length", "$TC_DP3 (tool length 1)"},

@@ -71,6 +71,15 @@ struct AxisWord {
   uint32_t column = 0;
 };
 
+// POLY: PO[ax]=(end, a2, a3, a4, a5) gives an axis's polynomial (its end point also stands in
+// the block as the axis word ax=end); PO[]=(b2, b3, b4), axis empty, the common denominator
+// (PGA Fundamentals, "Polynomial interpolation (POLY, POLYPATH, PO, PL)").
+struct PolyWord {
+  std::string axis;  // upper case; empty for PO[]
+  std::vector<double> values;
+  uint32_t column = 0;
+};
+
 // PROC ... SAVE: the subprogram's first block asks the interpreter to keep its modal state,
 // the block after the return to restore it (PGA Job Planning, "SAVE").
 enum class ModalSave : uint8_t { None, Save, Restore };
@@ -88,6 +97,7 @@ struct Block {
   std::optional<std::string> tool_name;  // T="name" (case preserved)
   std::vector<SystemWrite> system_writes;
   std::vector<AxisWord> axis_words;
+  std::vector<PolyWord> poly;
   ModalSave modal_save = ModalSave::None;
 
   // Empties the block but keeps the vectors' capacity (the loader reuses one Block).
@@ -104,6 +114,7 @@ struct Block {
     tool_name.reset();
     system_writes.clear();
     axis_words.clear();
+    poly.clear();
     modal_save = ModalSave::None;
   }
 

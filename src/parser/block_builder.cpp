@@ -155,6 +155,10 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     if (axis_word(item)) return;
+    if (item.name == "PO") {
+      polynomial(item);
+      return;
+    }
     if (item.name == "M" && item.index_count == 0) {  // M=QU(8), M=R10: the M function of the value
       add_m(item, 0, item.expr, 0);
       return;
@@ -173,7 +177,7 @@ class ProgramLoader::BlockBuilder {
       // OVR=50, CTOL=0.01: valid settings drycut does not model.
       const Support s = command_support(item.name);
       if (s == Support::NotModelled) {
-        l_.warn_not_modelled(std::string(item.name) + "=", item.column);
+        l_.warn_not_modelled(not_modelled_assignment(item), item.column);
         return;
       }
       if (s == Support::NoEffect) return;
@@ -298,8 +302,9 @@ class ProgramLoader::BlockBuilder {
     }
     if (s == Support::NoEffect) return;
     if (s == Support::Modelled) {
-      add_command(item);
+      CommandWord& c = add_command(item);
       if (item.name == "RET") action_ = PendingAction::Return;
+      if (item.index_count > 0) c.args.emplace_back(axis_index_text(item));  // DIAMONA[X], SCC[X]
       return;
     }
     if (l_.find_variable(item.name) || is_address(item.name))
@@ -321,6 +326,44 @@ class ProgramLoader::BlockBuilder {
                                              (guess.empty() ? "" : " (did you mean " + std::string(guess) + "?)"));
     }
     set_call(item.name, item.column);
+  }
+
+  // PO[X]=(end, a2 .. a5): the axis word X=end and the coefficients; PO[]=(b2 .. b4).
+  void polynomial(const Item& item) {
+    PolyWord w;
+    w.column = item.column;
+    if (item.index_count > 0) w.axis = axis_index_text(item);
+    const uint32_t most = w.axis.empty() ? 3 : 5;
+    if (item.arg_count < 1 || item.arg_count > most)
+      throw LineError(12080, item.column, w.axis.empty() ? "PO[]=(b2, b3, b4) takes 1 to 3 values"
+                                                         : "PO[" + w.axis + "]=(end, a2, a3, a4, a5) takes 1 to 5 values");
+    for (uint32_t k = 0; k < item.arg_count; ++k) w.values.push_back(l_.eval(l_.parsed_.pool.args[item.arg_first + k]));
+    if (!w.axis.empty()) out_.addresses.push_back(AddressWord{w.axis, w.values[0], ValueMode::Default, item.column});
+    out_.poly.push_back(std::move(w));
+    has_words_ = true;
+  }
+
+  // "OVR=", "FXS[Z]= (travel to fixed stop: ...)": what a warned setting names.
+  std::string not_modelled_assignment(const Item& item) {
+    std::string text(item.name);
+    if (item.index_count == 1) {
+      const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+      text += "[" + (index.is_number() ? number_to_text(index.number) : index.text) + "]";
+    }
+    text += "=";
+    if (item.name == "FXS" || item.name == "FXST" || item.name == "FXSW")
+      text += " (travel to fixed stop: the axis is planned to the programmed end point)";
+    return text;
+  }
+
+  // The axis of NAME[axis] (AXNAME("X") and axis variables too), upper case.
+  std::string axis_index_text(const Item& item) {
+    if (item.index_count != 1) throw LineError(12410, item.column, std::string(item.name) + "[...] takes one axis");
+    const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
+    if (index.kind != ValueKind::Axis && !index.is_text()) throw LineError(12150, item.column, std::string(item.name) + "[...] needs an axis");
+    std::string axis = index.text;
+    for (char& c : axis) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return axis;
   }
 
   // MCALL name(args): the loader calls it after every later block with axis motion

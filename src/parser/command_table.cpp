@@ -25,7 +25,7 @@ constexpr std::array kCommands{
     CommandEntry{"CDON", M},    CommandEntry{"CDOF", M},    CommandEntry{"TRANS", M},
     CommandEntry{"ATRANS", M},  CommandEntry{"SPLINEPATH", M},
     CommandEntry{"MSG", M},     CommandEntry{"RET", M},
-    CommandEntry{"POLY", M},
+    CommandEntry{"POLY", M},    CommandEntry{"POLYPATH", N},  // which axis groups POLY bends: not modelled
     CommandEntry{"COMPON", M},  CommandEntry{"COMPCURV", M}, CommandEntry{"COMPCAD", M},
     CommandEntry{"COMPOF", M},
     // Valid on the control, not modelled by drycut.
@@ -39,7 +39,7 @@ constexpr std::array kCommands{
     CommandEntry{"DYNROUGH", M}, CommandEntry{"DYNSEMIFIN", M}, CommandEntry{"DYNFINISH", M},
     CommandEntry{"ORIWKS", N},  CommandEntry{"ORIMKS", N},  CommandEntry{"ORIAXES", N},
     CommandEntry{"ORIVECT", N}, CommandEntry{"CUT2D", N},   CommandEntry{"CUT3DC", N},
-    CommandEntry{"SUPA", M},    CommandEntry{"DIAMON", N},  CommandEntry{"DIAMOF", N},
+    CommandEntry{"SUPA", M},    CommandEntry{"DIAMON", M},  CommandEntry{"DIAMOF", M},
     CommandEntry{"SPOS", M},    CommandEntry{"SETMS", N},   CommandEntry{"WAITM", N},
     CommandEntry{"FGROUP", M},  CommandEntry{"FNORM", E},   CommandEntry{"FLIN", N},
     CommandEntry{"FCUB", N},    CommandEntry{"TCARR", N},   CommandEntry{"TCOABS", M},
@@ -56,7 +56,7 @@ constexpr std::array kCommands{
     CommandEntry{"OTOL", N},    CommandEntry{"TOFFON", N},
     CommandEntry{"TOFFOF", N},  CommandEntry{"TOFFL", N},   CommandEntry{"TOFF", N},
     CommandEntry{"CUTMOD", N},  CommandEntry{"ORISON", N},  CommandEntry{"ORISOF", N},
-    CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", N},
+    CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", M},
     CommandEntry{"TRAILON", N}, CommandEntry{"TRAILOF", N}, CommandEntry{"COUPON", N},
     CommandEntry{"COUPOF", N},  CommandEntry{"SPCON", N},   CommandEntry{"SPCOF", N},
     // Corner deceleration, 3-D compensation, orientation and transformation modes, buffer control:
@@ -108,7 +108,14 @@ constexpr std::array kCommands{
     CommandEntry{"LFPOS", N},   CommandEntry{"LFWP", N},    CommandEntry{"LFTXT", N},
     CommandEntry{"COUPDEF", N}, CommandEntry{"COUPONC", N}, CommandEntry{"COUPOFS", N},
     CommandEntry{"COUPDEL", N}, CommandEntry{"COUPRES", N}, CommandEntry{"WAITC", N},
-    CommandEntry{"DIAMCHAN", N}, CommandEntry{"DIAMCYCOF", N},
+    CommandEntry{"DIAMCHAN", M}, CommandEntry{"DIAMCYCOF", M},
+    // Axis-specific diameter programming and the reference axis of G96 (Fundamentals,
+    // "Dimensions for turning" and "Constant cutting rate"): written NAME[axis].
+    CommandEntry{"DIAMONA", M}, CommandEntry{"DIAMOFA", M}, CommandEntry{"DIAM90A", M},
+    CommandEntry{"DIACYCOFA", M}, CommandEntry{"DIAMCHANA", M}, CommandEntry{"SCC", M},
+    // Travel to fixed stop (Fundamentals, "Travel to fixed stop"): FXS[ax]=1/0, torque FXST[ax]=,
+    // monitoring window FXSW[ax]=. The axis stops at the stop, not at the end point: warned.
+    CommandEntry{"FXS", N},     CommandEntry{"FXST", N},    CommandEntry{"FXSW", N},
     // Valid, and modelled by doing nothing: they change display, single-block or buffer
     // behaviour, nothing a dry run measures.
     CommandEntry{"SBLOF", E},   CommandEntry{"SBLON", E},   CommandEntry{"DISPLOF", E},
@@ -200,7 +207,9 @@ Support g_code_support(int64_t g) {
     case 700: case 710:
     case 33: case 34: case 35: case 63: case 93: case 96: case 97: case 331: case 332:  // threads, feed types
       return M;
-    case 5: case 7: case 8: case 25: case 26: case 58: case 59:
+    case 25: case 26:  // spindle speed limits (G25/G26 S); with axis words: working area, warned
+      return M;
+    case 5: case 7: case 8: case 58: case 59:
     case 74: case 75: case 140: case 141:
     case 142: case 143: case 147: case 148: case 247: case 248: case 290: case 291:
     case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:
@@ -244,6 +253,11 @@ bool g_group_of_code(int code, int& group, int& index) {
       }
     }
   return false;
+}
+
+bool is_axis_indexed_command(std::string_view name) {
+  return name == "DIAMONA" || name == "DIAMOFA" || name == "DIAM90A" || name == "DIACYCOFA" ||
+         name == "DIAMCHANA" || name == "SCC";
 }
 
 bool is_extended_address(std::string_view name) {

@@ -33,6 +33,9 @@ bool is_extended_address(std::string_view upper_name);
 int g_code_of_group(int group, int index);
 // The group and internal number of a G code, or false.
 bool g_group_of_code(int code, int& group, int& index);
+// Commands written with an axis index and no value (PGA Fundamentals, diameter programming
+// and G96): DIAMONA[X], DIAMOFA[X], DIAM90A[X], DIACYCOFA[X], DIAMCHANA[X], SCC[X].
+bool is_axis_indexed_command(std::string_view upper_name);
 // Closest known command or keyword within a small edit distance ("ASPLIN" -> "ASPLINE"), or
 // empty. Used to tell a misspelled word from an unknown subprogram.
 std::string_view near_miss(std::string_view upper_name);

@@ -30,6 +30,8 @@ constexpr std::array kSyntax{
     Row{"POS[ax]= POSA[ax]= FA[ax]= WAITP(ax)", M, "positioning axes on their own interpolator, their feed, waiting for them"},
     Row{"SPOS= SPOS[n]= SPOSA= WAITS", M, "spindle positioning (position control) and waiting for it"},
     Row{"FGROUP(ax, ...)", M, "the axes whose travel the path feed F refers to"},
+    Row{"POLY PO[ax]=(end, a2, a3, a4, a5) PL=", M, "polynomial interpolation (degree <= 5 per axis, p in [0, PL], PL default 1); PO[]=(b2..b4), the denominator, is warned and planned straight (docs/controller-state.md \"Polynomial interpolation\")"},
+    Row{"DIAMONA[ax] DIAMOFA[ax] DIAM90A[ax] DIACYCOFA[ax] DIAMCHANA[ax] SCC[ax]", M, "axis-specific diameter programming; the reference axis of G96 (docs/controller-state.md \"Diameter programming\")"},
     Row{"$P_UIFR[n]=CTRANS(..) / $P_UIFR[n,ax,TR|FI|RT|SC|MI]=v / $P_PFRAME=CROT(..)", M, "settable frame (effective at its next selection) and programmable frame (at once), whole or by component"},
     Row{"X1= S1= M2=3 H7=40", M, "extended addresses: axis names, spindle/auxiliary function numbers"},
     Row{"G[group]=n", M, "indirect G code by group and internal number (groups 1 6 7 8 10 12 13 14 15 18)"},

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "parser/command_table.hpp"
 #include "parser/expression_parser.hpp"
 #include "parser/line_error.hpp"
 
@@ -515,6 +516,28 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
   return std::nullopt;
 }
 
+// PO[X]=(end, a2, ...) and PO[]=(b2, ...): the values are a list, as a procedure's arguments.
+void LineParser::parse_polynomial(ParsedLine& out, Item& item) {
+  ++pos_;  // PO
+  if (peek(1).kind == TokenKind::RBracket) {
+    pos_ += 2;  // "[]": the denominator
+  } else {
+    ExprIndex first = kNoExpr;
+    item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
+    item.index_first = first;
+  }
+  if (peek().kind != TokenKind::Assign || peek(1).kind != TokenKind::LParen)
+    throw LineError(12080, peek().column, "PO[axis]=(values) expected");
+  pos_ += 2;
+  item.kind = ItemKind::Assign;
+  std::array<ExprIndex, 8> values{};
+  const auto count = static_cast<uint32_t>(
+      ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, values, false, "too many polynomial values"));
+  item.arg_first = static_cast<uint32_t>(out.pool.args.size());
+  item.arg_count = count;
+  out.pool.args.insert(out.pool.args.end(), values.begin(), values.begin() + count);
+}
+
 void LineParser::parse_words(ParsedLine& out) {
   while (peek().kind != TokenKind::End) {
     const Token& t = peek();
@@ -551,6 +574,8 @@ void LineParser::parse_words(ParsedLine& out) {
       if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
       ++pos_;
       item.expr = expression(out);
+    } else if (t.text == "PO" && next.kind == TokenKind::LBracket) {
+      parse_polynomial(out, item);
     } else if (next.kind == TokenKind::LBracket) {
       // A[1,2]=..., $MA_COMPRESS_POS_TOL[X1]=..., G[8]=2, M[2]=3, S[1]=1000
       ++pos_;
@@ -558,6 +583,11 @@ void LineParser::parse_words(ParsedLine& out) {
       item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
       item.index_first = first;
       item.kind = ItemKind::Assign;
+      if (peek().kind != TokenKind::Assign && is_axis_indexed_command(item.name)) {
+        item.kind = ItemKind::Name;  // DIAMONA[X], SCC[X]: a command with an axis, no value
+        out.items.push_back(item);
+        continue;
+      }
       if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after an array element");
       ++pos_;
       item.expr = expression(out);

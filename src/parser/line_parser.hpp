@@ -22,6 +22,7 @@ class LineParser {
   bool parse_statement(ParsedLine& out);
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_words(ParsedLine& out);
+  void parse_polynomial(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..)
   void parse_jump_target(ParsedLine& out);
   void parse_jump_target(ParsedLine& out, JumpTarget& target);
   void parse_type(DefEntry& e);

@@ -205,6 +205,16 @@ TEST(MachineDataImport, RequiredAxisValuesMissingTakeTheFallback) {
   EXPECT_DOUBLE_EQ(r.profile.ipo_cycle_s, 0.004);
 }
 
+TEST(MachineDataImport, TransverseAxisFromMd20100) {
+  // MD20100 names the control's geometry axis; geometry axis 1 is called "XL" there: the profile's X.
+  const MachineDataImport lathe = import_text("$MC_AXCONF_GEOAX_NAME_TAB[0]=\"XL\"\n$MC_DIAMETER_AX_DEF=\"XL\"\n");
+  EXPECT_EQ(lathe.profile.diameter_axis, "X");
+  EXPECT_EQ(lathe.sources.at("program.diameter_ax_def").datum, "$MC_DIAMETER_AX_DEF");
+  const MachineDataImport odd = import_text("$MC_DIAMETER_AX_DEF=\"Q\"\n");
+  EXPECT_EQ(odd.profile.diameter_axis, "");
+  EXPECT_TRUE(any_contains(odd.notes, "not a geometry axis"));
+}
+
 TEST(MachineDataImport, UnmappedDataKeptUnderMachineDataByTheirProgramName) {
   const MachineDataImport r = import_test_file();
   const auto& md = r.profile.machine_data;

@@ -333,5 +333,17 @@ TEST(LoadProfile, DynamicGroupErrorsNameTheKey) {
   EXPECT_NE(error_of(j).find("dynamic_groups.DYNPOS.max_ax_accel_factor"), std::string::npos) << error_of(j);
 }
 
+TEST(LoadProfile, TransverseAxisMd20100) {
+  // diameter_ax_def names a path axis (MD20100 DIAMETER_AX_DEF); default none; round trip.
+  EXPECT_EQ(load_profile_json(small_profile().dump(), "t").diameter_axis, "");
+  json j = small_profile();
+  j["program"]["diameter_ax_def"] = "X";
+  const MachineProfile lathe = load_profile_json(j.dump(), "t");
+  EXPECT_EQ(lathe.diameter_axis, "X");
+  EXPECT_EQ(load_profile_json(profile_to_json(lathe), "round trip").diameter_axis, "X");
+  j["program"]["diameter_ax_def"] = "Q";
+  EXPECT_NE(error_of(j).find("program.diameter_ax_def"), std::string::npos) << error_of(j);
+}
+
 }  // namespace
 }  // namespace drycut::machine

@@ -147,6 +147,19 @@ TEST(LineParser, SyntaxErrors) {
   EXPECT_EQ(error_of("DEF FOO X"), 12080);
   EXPECT_EQ(error_of("ENDIF X1"), 12080);
   EXPECT_EQ(error_of("G1.5"), 12080);
+  EXPECT_EQ(error_of("A[1] X1"), 12080);  // an array element needs '=' (only axis commands go without)
+}
+
+TEST(LineParser, AxisIndexedCommandsWithoutValue) {
+  // DIAMONA[X], SCC[X] (Fundamentals, diameter programming and G96): a name with an axis index.
+  Parsed p;
+  const ParsedLine& line = p("DIAMONA[X] SCC[Z] G0 X40");
+  ASSERT_EQ(line.items.size(), 4u);
+  EXPECT_EQ(line.items[0].kind, ItemKind::Name);
+  EXPECT_EQ(line.items[0].name, "DIAMONA");
+  EXPECT_EQ(line.items[0].index_count, 1u);
+  EXPECT_EQ(line.items[1].kind, ItemKind::Name);
+  EXPECT_EQ(line.items[1].name, "SCC");
 }
 
 }  // namespace

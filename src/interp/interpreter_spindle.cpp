@@ -1,0 +1,92 @@
+// The programmable spindle speed limits G25 S / G26 S and the dwell in spindle revolutions
+// G4 S / G4 S<n>= (Fundamentals, "Programmable spindle speed limitation (G25, G26)" and
+// "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits").
+#include <cmath>
+#include <cstdio>
+
+#include "interp/interpreter.hpp"
+#include "interp/interpreter_block.hpp"
+
+namespace drycut::interp {
+
+using parser::AddressWord;
+using namespace detail;
+
+namespace {
+
+std::string rpm_text(double rpm) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", rpm);
+  return buf;
+}
+
+}  // namespace
+
+void Interpreter::set_speed_limit(const BlockContext& ctx, const AddressWord& a) {
+  // The S of a G25/G26 block is the limit, not a speed; it stays until the next G25/G26 S.
+  (ctx.speed_limit == 25 ? spindle_min_rpm_ : spindle_max_rpm_) = a.value;
+}
+
+double Interpreter::limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed) {
+  // A standing spindle (S0) is not raised to the lower limit.
+  const bool below = spindle_min_rpm_ > 0 && rpm > 0 && rpm < spindle_min_rpm_;
+  const bool above = spindle_max_rpm_ > 0 && rpm > spindle_max_rpm_;
+  if (!below && !above) return rpm;
+  const double limited = above ? spindle_max_rpm_ : spindle_min_rpm_;
+  // Under G96 the speed changes with every block: one warning per limit, not per speed.
+  const std::string what = (constant_cutting_speed ? std::string("G96 spindle speed") : "S" + rpm_text(rpm)) +
+                           (above ? " above the G26 limit" : " below the G25 limit") + ": limited to " +
+                           rpm_text(limited) + " rpm";
+  if (warned_.insert(what).second)
+    diagnostics_.warn(kValueLimited, what, {ctx.file_name(), ctx.block.line, 0}, ctx.block.text);
+  return limited;
+}
+
+double Interpreter::dwell_in_revolutions(const BlockContext& ctx, const AddressWord& s) {
+  double rpm = 0.0;
+  if (const int n = numbered_spindle(s.name); n > 0 && n != profile_.master_spindle) {
+    // Another spindle: its programmed speed (S<n>=), which drycut keeps but does not simulate.
+    const auto it = other_spindles_.find(n);
+    if (it == other_spindles_.end() || it->second.rpm <= 0 || !it->second.turning) {
+      warn_once(ctx, "G4 " + s.name + "=: the speed of spindle " + std::to_string(n) +
+                         " is not known to drycut (dwell taken as 0 s)", s.column);
+      return 0.0;
+    }
+    rpm = it->second.rpm;
+  } else {
+    rpm = spindle_speed(ctx);
+    if (rpm <= 0) raise(ctx, 12160, "G4 S needs a turning spindle", s.column);
+  }
+  const double seconds = s.value * 60.0 / rpm;
+  if (!(seconds >= 0 && seconds <= kMaxDwellS)) raise(ctx, 12160, "dwell time must be 0..999999.999 s", s.column);
+  return seconds;
+}
+
+void Interpreter::warn_working_area(const BlockContext& ctx) {
+  // G25/G26 with axis words limit the working area (WALIMON): a setting, not a motion.
+  for (const AddressWord& a : ctx.block.addresses)
+    if (axis_index(a.name) >= 0 || extra_axes_.index(a.name) >= 0 || is_axis_letter_name(a.name))
+      warn_once(ctx, "G" + std::to_string(ctx.speed_limit) + " " + a.name + " (working area limitation)", a.column);
+}
+
+// G4: F<seconds>, S<revolutions> of the master or S<n>=<revolutions> of spindle n.
+void Interpreter::emit_dwell(BlockContext& ctx) {
+  PathElement e = element_template(ctx, ElementKind::Dwell);
+  const AddressWord* f = ctx.block.find_address("F");
+  const AddressWord* s = nullptr;  // S or S<n>=: revolutions of the master or of spindle n
+  for (const AddressWord& a : ctx.block.addresses)
+    if (a.name == "S" || numbered_spindle(a.name) > 0) s = &a;
+  if (f) {
+    if (f->value < 0 || f->value > kMaxDwellS)
+      raise(ctx, 12160, "dwell time must be 0..999999.999 s", f->column);
+    e.dwell_s = f->value;
+  } else if (s) {
+    e.dwell_s = dwell_in_revolutions(ctx, *s);
+  } else {
+    raise(ctx, 12080, "G4 needs F<seconds> or S<revolutions>");
+  }
+  e.label = "G4";
+  emit(std::move(e));
+}
+
+}  // namespace drycut::interp
