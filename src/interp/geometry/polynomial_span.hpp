@@ -46,6 +46,7 @@ class PolynomialSpan final : public Curve {
 
   Eigen::Matrix4d c_;
   double u_end_;
+  bool polynomial_;  // w == 1 (Akima, cubic): P = H.xyz, no quotient rule
   ArcLengthTable table_;
   mutable double max_curvature_ = -1.0;  // < 0: not sampled yet
 };
