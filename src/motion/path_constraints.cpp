@@ -55,22 +55,24 @@ double AxisVelocityConstraint::max_velocity(const ElementDynamics& d, const Curv
 double CurvatureConstraint::max_velocity(const ElementDynamics& d, const CurvePoint& p) const {
   if (p.curvature <= 1e-12) return kInf;
   const double share = d.centripetal_share > 0 ? d.centripetal_share : 1.0;
-  double v = kInf;
+  // sqrt is monotone and correctly rounded: the root of the smallest ratio is the smallest root.
+  double v2 = kInf;
   for (int i = 0; i < 3; ++i) {
     const double k = std::abs(p.curvature_vector[i]);
-    if (k > 1e-15) v = std::min(v, std::sqrt(share * d.axis_accel[i] / k));
+    if (k > 1e-15) v2 = std::min(v2, share * d.axis_accel[i] / k);
   }
-  return v;
+  return v2 < kInf ? std::sqrt(v2) : kInf;
 }
 
 double CurvatureJerkConstraint::max_velocity(const ElementDynamics& d, const CurvePoint& p) const {
   if (!d.soft || p.curvature <= 1e-12) return kInf;
-  double v = kInf;
+  // One cube root, of the smallest ratio (the cube root is monotone; this one to a few ulps).
+  double v3 = kInf;
   for (int i = 0; i < 3; ++i) {
     const double r = std::abs(p.curvature_rate[i]);
-    if (r > 1e-15) v = std::min(v, cube_root(d.axis_jerk[i] / r));
+    if (r > 1e-15) v3 = std::min(v3, d.axis_jerk[i] / r);
   }
-  return v;
+  return v3 < kInf ? cube_root(v3) : kInf;
 }
 
 double ShortBlockConstraint::max_velocity(const ElementDynamics& d, const CurvePoint&) const {

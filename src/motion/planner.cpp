@@ -11,6 +11,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kMaxSegmentsPerElement = 20000;
+constexpr size_t kSpareElements = 256;
 
 DiscretisationRule discretisation_rule(const PlannerOptions& options) {
   DiscretisationRule rule;
@@ -128,10 +129,22 @@ void Planner::append_passive(interp::PathElement element) {
     observer_.on_block(t);
     return;
   }
-  WindowElement w;
+  WindowElement& w = new_window_element();
   w.element = std::move(element);
+  w.dynamics = ElementDynamics{};
   w.segment_count = 0;
-  elements_.push_back(std::move(w));
+}
+
+// The window's elements are recycled (a PathElement with its dynamics is larger than a deque
+// block: one allocation per element otherwise). Addresses stay fixed while in the window.
+Planner::WindowElement& Planner::new_window_element() {
+  if (spare_elements_.empty()) {
+    elements_.push_back(std::make_unique<WindowElement>());
+  } else {
+    elements_.push_back(std::move(spare_elements_.back()));
+    spare_elements_.pop_back();
+  }
+  return *elements_.back();
 }
 
 void Planner::append_positioning(interp::PathElement element) {
@@ -252,8 +265,8 @@ bool Planner::discretise(const WindowElement& w, double length, double& grid) {
   return envelope;
 }
 
-void Planner::append_motion(interp::PathElement element) {
-  WindowElement& w = elements_.emplace_back();
+void Planner::append_motion(interp::PathElement&& element) {
+  WindowElement& w = new_window_element();
   w.element = std::move(element);
   const double length = w.element.path_length();
   w.dynamics = make_element_dynamics(w.element, length, profile_);
@@ -373,7 +386,7 @@ void Planner::backward_pass(bool full) {
 }
 
 void Planner::commit_front() {
-  WindowElement& w = elements_.front();
+  WindowElement& w = *elements_.front();
   const interp::PathElement& e = w.element;
   note_block_start(e.source);
   if (e.kind == interp::ElementKind::Positioning)
@@ -497,6 +510,10 @@ void Planner::commit_front() {
 
   if (w.segment_count > 0) --motion_in_window_;
   if (last_motion_ == &w) last_motion_ = nullptr;
+  if (spare_elements_.size() < kSpareElements) {
+    w.element.curve.reset();  // the geometry is not kept alive by a spare
+    spare_elements_.push_back(std::move(elements_.front()));
+  }
   elements_.pop_front();
 }
 

@@ -178,7 +178,8 @@ class Planner : public interp::ElementSink {
     size_t segment_count = 0;
   };
 
-  void append_motion(interp::PathElement element);
+  void append_motion(interp::PathElement&& element);
+  WindowElement& new_window_element();
   bool discretise(const WindowElement& w, double length, double& grid);
   void append_passive(interp::PathElement element);
   void append_positioning(interp::PathElement element);
@@ -203,7 +204,8 @@ class Planner : public interp::ElementSink {
   DiscretisationRule discretisation_;
   std::vector<Station> stations_;  // reused by append_motion
 
-  std::deque<WindowElement> elements_;
+  std::deque<std::unique_ptr<WindowElement>> elements_;
+  std::vector<std::unique_ptr<WindowElement>> spare_elements_;  // popped elements, for reuse
   std::deque<Node> nodes_;
   std::deque<Segment> segments_;
   size_t motion_in_window_ = 0;

@@ -8,12 +8,33 @@ namespace drycut::geometry {
 namespace {
 // Curvature is sampled at this many equal parameter steps for max_curvature().
 constexpr int kCurvatureSamples = 32;
+
+// |dP/du| of a polynomial span (w == 1): |H'.xyz|.
+inline double polynomial_speed(const Eigen::Matrix4d& c, double u) {
+  const auto c1 = c.col(1).head<3>(), c2 = c.col(2).head<3>(), c3 = c.col(3).head<3>();
+  return (c1 + u * (2.0 * c2 + 3.0 * u * c3)).norm();
+}
+
+// |dP/du| of a rational span: d(A/w)/du = (A' w - A w') / w^2.
+inline double rational_speed(const Eigen::Matrix4d& c, double u) {
+  const Eigen::Vector4d h0 = c.col(0) + u * (c.col(1) + u * (c.col(2) + u * c.col(3)));
+  const Eigen::Vector4d h1 = c.col(1) + u * (2.0 * c.col(2) + 3.0 * u * c.col(3));
+  return (h1.head<3>() * h0(3) - h0.head<3>() * h1(3)).norm() / (h0(3) * h0(3));
+}
 }  // namespace
 
+// Calls f with the span's speed function, resolved once (the quadratures inline it).
+template <typename F>
+auto PolynomialSpan::with_speed(F&& f) const {
+  if (polynomial_) return f([this](double u) { return polynomial_speed(c_, u); });
+  return f([this](double u) { return rational_speed(c_, u); });
+}
+
 PolynomialSpan::PolynomialSpan(const Eigen::Matrix4d& coefficients, double u_end)
-    : c_(coefficients), u_end_(u_end) {
-  const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
-  table_ = ArcLengthTable(sp, 0.0, u_end_);
+    : c_(coefficients),
+      u_end_(u_end),
+      polynomial_(c_(3, 0) == 1.0 && c_(3, 1) == 0.0 && c_(3, 2) == 0.0 && c_(3, 3) == 0.0) {
+  table_ = with_speed([this](const auto& speed) { return ArcLengthTable(speed, 0.0, u_end_); });
 }
 
 double PolynomialSpan::max_curvature() const {
@@ -42,6 +63,17 @@ PolynomialSpan PolynomialSpan::hermite(const Vec3& p0, const Vec3& p1, const Vec
 }
 
 ParametricDerivatives PolynomialSpan::derivatives(double u) const {
+  if (polynomial_) {
+    // w == 1: the general formulas below with w = 1, w' = w'' = w''' = 0 (the same values).
+    ParametricDerivatives d;
+    const auto c0 = c_.col(0).head<3>(), c1 = c_.col(1).head<3>();
+    const auto c2 = c_.col(2).head<3>(), c3 = c_.col(3).head<3>();
+    d.p = c0 + u * (c1 + u * (c2 + u * c3));
+    d.d1 = c1 + u * (2.0 * c2 + 3.0 * u * c3);
+    d.d2 = 2.0 * c2 + 6.0 * u * c3;
+    d.d3 = 6.0 * c3;
+    return d;
+  }
   const Eigen::Vector4d h0 = c_.col(0) + u * (c_.col(1) + u * (c_.col(2) + u * c_.col(3)));
   const Eigen::Vector4d h1 = c_.col(1) + u * (2.0 * c_.col(2) + 3.0 * u * c_.col(3));
   const Eigen::Vector4d h2 = 2.0 * c_.col(2) + 6.0 * u * c_.col(3);
@@ -56,21 +88,12 @@ ParametricDerivatives PolynomialSpan::derivatives(double u) const {
   return d;
 }
 
-double PolynomialSpan::speed(double u) const {
-  const Eigen::Vector4d h0 = c_.col(0) + u * (c_.col(1) + u * (c_.col(2) + u * c_.col(3)));
-  const Eigen::Vector4d h1 = c_.col(1) + u * (2.0 * c_.col(2) + 3.0 * u * c_.col(3));
-  // d(A/w)/du = (A' w - A w') / w^2
-  return (h1.head<3>() * h0(3) - h0.head<3>() * h1(3)).norm() / (h0(3) * h0(3));
-}
-
 double PolynomialSpan::arc_length_between(double u0, double u1) const {
-  const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
-  return ArcLengthTable::gauss5(sp, u0, u1);
+  return with_speed([&](const auto& speed) { return ArcLengthTable::gauss5(speed, u0, u1); });
 }
 
 double PolynomialSpan::parameter_at(double s) const {
-  const ArcLengthTable::Speed sp = [this](double u) { return speed(u); };
-  return table_.parameter_at(sp, s);
+  return with_speed([&](const auto& speed) { return table_.parameter_at(speed, s); });
 }
 
 CurvePoint PolynomialSpan::by_arc_length(const ParametricDerivatives& d) {

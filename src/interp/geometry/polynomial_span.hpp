@@ -41,11 +41,14 @@ class PolynomialSpan final : public Curve {
   static CurvePoint by_arc_length(const ParametricDerivatives& d);
 
  private:
-  // |dP/du| only (the arc-length integrand): skips the higher derivatives.
-  double speed(double u) const;
+  // Calls f with |dP/du| (the arc-length integrand, without the higher derivatives) as a
+  // callable, polynomial or rational.
+  template <typename F>
+  auto with_speed(F&& f) const;
 
   Eigen::Matrix4d c_;
   double u_end_;
+  bool polynomial_;  // w == 1 (Akima, cubic): P = H.xyz, no quotient rule
   ArcLengthTable table_;
   mutable double max_curvature_ = -1.0;  // < 0: not sampled yet
 };

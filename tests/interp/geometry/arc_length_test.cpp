@@ -41,6 +41,44 @@ TEST(ArcLength, RationalNurbsSpan) {
   for (const auto& s : spans) check_span(dynamic_cast<const PolynomialSpan&>(*s.curve));
 }
 
+// A polynomial span (w == 1) takes a shortcut past the quotient rule; the same curve written
+// with the constant weight w == 2 (every coefficient doubled) goes through the rational
+// formulas. Both must agree: positions, derivatives, length and the s -> u inversion.
+TEST(ArcLength, PolynomialShortcutMatchesRationalFormulas) {
+  Eigen::Matrix4d c;
+  c << 1.0, 0.3, 0.7, -0.21,  //
+      -2.0, 0.0, 1.9, -0.45,  //
+      0.5, 0.1, 0.2, 0.05,    //
+      1.0, 0.0, 0.0, 0.0;
+  const PolynomialSpan poly(c, 3.0);
+  Eigen::Matrix4d doubled = 2.0 * c;  // w == 2 everywhere: the same curve
+  const PolynomialSpan rational(doubled, 3.0);
+  EXPECT_NEAR(rational.length(), poly.length(), 1e-13 * poly.length());
+  for (double frac : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+    const double u = frac * poly.parameter_end();
+    const ParametricDerivatives a = poly.derivatives(u), b = rational.derivatives(u);
+    EXPECT_LT((a.p - b.p).norm(), 1e-13);
+    EXPECT_LT((a.d1 - b.d1).norm(), 1e-13 * a.d1.norm());
+    EXPECT_LT((a.d2 - b.d2).norm(), 1e-12 * (1 + a.d2.norm()));
+    EXPECT_LT((a.d3 - b.d3).norm(), 1e-12 * (1 + a.d3.norm()));
+    const double s = frac * poly.length();
+    EXPECT_NEAR(poly.parameter_at(s), rational.parameter_at(s), 1e-12);
+  }
+}
+
+// A speed with a near-cusp needs many table entries (beyond those kept inside the table):
+// the length still matches the polyline and the inversion stays monotone.
+TEST(ArcLength, LongTableBeyondInlineEntries) {
+  const PolynomialSpan span = PolynomialSpan::hermite({0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {3, 0.001, 0}, 1.0);
+  check_span(span);
+  double last = -1;
+  for (int i = 0; i <= 200; ++i) {
+    const double u = span.parameter_at(span.length() * i / 200);
+    EXPECT_GE(u, last);
+    last = u;
+  }
+}
+
 TEST(ArcLength, SplineSpanMaxCurvatureBoundsSampledCurvature) {
   const PolynomialSpan span = PolynomialSpan::hermite({0, 0, 0}, {4, 1, 0}, {1, 0, 0}, {0, 1, 0}, 4.2);
   double sampled = 0;
