@@ -141,6 +141,10 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   // A measuring input (MEAS/MEAW) is taken as having switched: a dry run has no part to touch,
   // and a probing macro checks the flag before it goes on (the control would stop it otherwise).
   if (n == "$AC_MEA") return Value(1.0);
+  // The run drycut simulates is a plain automatic run: no block search ($P_SEARCH), no program
+  // test ($P_ISTEST), no dry-run feed ($P_DRYRUN), not the control's own simulation ($P_SIM).
+  // Macros read them to skip moves in those modes (Job Planning, system variables list).
+  if (n == "$P_SEARCH" || n == "$P_ISTEST" || n == "$P_DRYRUN" || n == "$P_SIM") return Value(0.0);
   // Whole frames, to be kept in a FRAME variable and written back ($P_PFRAME=SAVED).
   const double unit = s.inch ? 25.4 : 1.0;
   if (n == "$P_PFRAME" && indices.empty()) return frame_value(s.frames.programmable(), unit);
