@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "interp/contour_corners.hpp"
+#include "interp/cutter_compensation.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp_test_support.hpp"
 
@@ -160,6 +161,30 @@ TEST(ContourCorners, NoCornerAfterMoreThanThreeBlocksOrForParallelBlocks) {
   Corners straight = run_corners("G0 X0 Y0 Z0\nG1 X10 F600 RND=2\nX20\nM30\n");
   EXPECT_EQ(straight.m.size(), 3u);
   EXPECT_TRUE(straight.warnings.empty());
+}
+
+TEST(ContourCorners, ToolRadiusCompensationOffsetsTheRounding) {
+  // G41 on a counter-clockwise square: the tool (test profile T1 D1, r = 2) runs inside. The
+  // rounding RND=5 at (20,0) (arc (15,0) -> (20,5) about (15,5)) becomes the concentric arc of
+  // radius 5 - 2 = 3 from (15,2) to (18,5) on the tool centre path (Z 50: the tool length 50
+  // is added to the carrier position).
+  Corners r = run_corners("T1 D1 M6\nG0 X-10 Y-10 Z0\nG1 G41 X0 Y0 F600\nX20 RND=5\nY20\nX0\nG40 X-10 Y-10\nM30\n");
+  ASSERT_TRUE(r.warnings.empty());
+  testing::CollectingSink centre;
+  Diagnostics diagnostics;
+  const auto profile = testing::test_profile();
+  CutterCompensation stage(centre, profile, diagnostics);
+  for (auto& e : r.run->sink.elements) stage.consume(PathElement(e));
+  stage.finish();
+  const PathElement* arc = nullptr;
+  for (const auto& e : centre.elements)
+    if (e.label == "RND") arc = &e;
+  ASSERT_NE(arc, nullptr);
+  const auto& circle = dynamic_cast<const geometry::ArcCurve&>(*arc->curve);
+  EXPECT_TRUE(near(circle.centre(), Vector3d(15, 5, 50), 1e-9));
+  EXPECT_NEAR(circle.radius(), 3, 1e-9);
+  EXPECT_TRUE(near(arc->curve->start(), Vector3d(15, 2, 50), 1e-9));
+  EXPECT_TRUE(near(arc->curve->end(), Vector3d(18, 5, 50), 1e-9));
 }
 
 TEST(ContourCorners, LegFormulas) {
