@@ -106,7 +106,8 @@ void ContourCorners::flush() {
 
 void ContourCorners::give_up(const std::string& why, bool modal_silent) {
   // RNDM before a stop or the end: there is no corner to round, nothing is lost.
-  if (!(modal_silent && pending_->corner.modal)) warn(*pending_, std::string(kind_name(pending_->corner)) + " " + why + " (not modelled: the corner stays sharp)");
+  if (!(modal_silent && pending_->corner.modal))
+    warn(*pending_, std::string(kind_name(pending_->corner)) + " " + why + ": not modelled, the corner stays sharp");
   flush();
 }
 
@@ -145,7 +146,7 @@ bool ContourCorners::insert_corner(PathElement& b) {
     return true;
   }
   if (!is_straight(b) || !is_straight(a)) {
-    give_up("before a " + b.label + " block (only between straight blocks modelled)");
+    give_up("before a " + b.label + " block, modelled only between straight G0/G1 blocks");
     return true;
   }
   if (b.corner.program_level != a.corner.program_level) {
