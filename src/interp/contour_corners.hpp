@@ -28,8 +28,8 @@
 //   2·t·cos(θ/2) (= c for CHF). The path gets shorter by 2t minus the inserted length.
 //   A leg longer than the room on either block (what is left of the first block after its own
 //   start was trimmed, the whole second block) is reduced to that room and the value with it
-//   (warning 990015; the control reduces without a message, its rule for how much is not
-//   published: drycut takes the largest that fits). Feed: FRC, else FRCM, else the second
+//   (drycut's warning 990015; the manual says only that the value is reduced, not by how
+//   much: drycut takes the largest that fits). Feed: FRC, else FRCM, else the second
 //   block's feed; rapid if the second block is G0. The inserted element carries the first
 //   block's source, dynamics and compensation request; a G9 of the first block moves to it.
 //   Not modelled (warning 990002 naming it, the corner stays sharp): a circle, spline or other
