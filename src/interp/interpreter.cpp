@@ -19,7 +19,8 @@ using namespace detail;
 Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& sink,
                          Diagnostics& diagnostics, InterpreterOptions options)
     : profile_(profile),
-      sink_(sink),
+      corners_(sink, diagnostics),
+      sink_(corners_),
       diagnostics_(diagnostics),
       options_(options),
       state_(reset_state(profile)),
@@ -52,6 +53,7 @@ void Interpreter::execute(const parser::Block& block) {
     apply_modal_save(block.modal_save);
     return;
   }
+  corners_.begin_block();
   BlockContext ctx(block);
   ctx.simple = is_simple_block(block);
   apply_system_writes(block);
@@ -61,6 +63,7 @@ void Interpreter::execute(const parser::Block& block) {
   apply_axis_words(ctx);
   apply_m_words(ctx);
   execute_motion(ctx);
+  warn_unused_corner(ctx);
   if (!ctx.simple) block_between_compressible_ = true;
 }
 
@@ -197,6 +200,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string_view n = a.name;  // compared with literals inline, without strlen
     if (apply_smoothing_address(ctx, a)) continue;
+    if (apply_corner_address(ctx, a)) continue;
     if (n == "F") {
       if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
       // F has a resolution of 0.001: a smaller value is zero on the control (and would make
@@ -421,6 +425,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.dynamics.profile = state_.accel;
   e.dynamics.group = state_.dynamic_group;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
+  e.corner.program_level = ctx.block.program_level;
   e.compensation.side = state_.compensation;
   // A mirror in the plane swaps the sides: G41 on the programmed contour is right of the mirrored one.
   if (e.compensation.side != CompensationSide::None && frame_mirrors_plane(block_frame(ctx)))
@@ -562,6 +567,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
       }
       attach_extra_axes(ctx, e, std::move(extra));
       mark_for_compressor(ctx, e);
+      request_corner(ctx, e);
       position_ = e.curve->end();
       check_limits(ctx, position_);
       emit(std::move(e));

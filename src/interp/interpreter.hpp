@@ -16,6 +16,7 @@
 #include <set>
 #include <string>
 
+#include "interp/contour_corners.hpp"
 #include "interp/extra_axes.hpp"
 #include "interp/frame_components.hpp"
 #include "interp/modal_state.hpp"
@@ -83,6 +84,12 @@ class Interpreter {
   void apply_commands(BlockContext& ctx);
   void apply_addresses(BlockContext& ctx);
   bool apply_smoothing_address(BlockContext& ctx, const parser::AddressWord& a);
+  // RND=, RNDM=, CHF=, CHR=, FRC=, FRCM= (interpreter_corners.cpp, contour_corners.hpp).
+  bool apply_corner_address(BlockContext& ctx, const parser::AddressWord& a);
+  // The chamfer or rounding the block asks for at the end of its element e (a G0/G1 line);
+  // warns where the block is of another kind.
+  void request_corner(BlockContext& ctx, PathElement& e);
+  void warn_unused_corner(BlockContext& ctx);  // RND/CHF/CHR in a block without a line
   void apply_m_words(BlockContext& ctx);
   // Extra axes and positioning axes (interpreter_axes.cpp, docs/axes.md).
   bool note_extra_axis_word(BlockContext& ctx, const parser::AddressWord& word);
@@ -155,6 +162,7 @@ class Interpreter {
   double dwell_in_revolutions(const BlockContext& ctx, const parser::AddressWord& s);
 
   const machine::MachineProfile& profile_;
+  ContourCorners corners_;  // every element goes through it (sink_ is this filter)
   ElementSink& sink_;
   Diagnostics& diagnostics_;
   InterpreterOptions options_;

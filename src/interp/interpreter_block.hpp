@@ -121,6 +121,12 @@ struct Interpreter::BlockContext {
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block
   std::vector<std::string> waits;            // WAITP/WAITS and implicit waits, before the motion
+  // RND=/CHF=/CHR= of this block (RND wins over a chamfer in the same block), FRC= as programmed.
+  ContourCornerKind corner = ContourCornerKind::None;
+  double corner_size_mm = 0.0;
+  uint32_t corner_column = 0;
+  double frc = 0.0;
+  bool corner_used = false;  // request_corner took the block's words
   bool simple = false;  // a block the compressor may join: nothing but G1, X/Y/Z and F (compress_rules.cpp)
 };
 

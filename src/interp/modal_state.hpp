@@ -66,6 +66,8 @@ struct ModalState {
   Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD
   DiameterState diameter;             // DIAMON/DIAMOF/DIAM90/DIAMCYCOF, DIAMONA[ax] ... (MD20100)
   int cutting_speed_axis = 0;         // SCC[ax]: the axis whose position is G96's radius (X..Z)
+  double rndm_mm = 0.0;               // RNDM=: modal rounding radius (0: off; contour_corners.hpp)
+  double frcm = 0.0;                  // FRCM=: modal chamfer/rounding feed as programmed (0: off)
 
   // Applies one reset/program code by name ("G64", "SOFT", "BTAN", ...). Returns false if the
   // name is not a modal code this state knows (the caller decides whether that is an error).

@@ -99,6 +99,17 @@ struct PositioningMove {
   bool block_synchronous = true;  // POS/SPOS: the block ends when it arrives; POSA/SPOSA run on
 };
 
+// A chamfer or rounding asked for at the end of this element (RND=, RNDM=, CHF=, CHR=; the
+// filter in src/interp/contour_corners.hpp inserts it). size_mm is r or c, converted to mm.
+enum class ContourCornerKind : uint8_t { None, Round /*RND, RNDM*/, Chamfer /*CHF*/, ChamferLeg /*CHR*/ };
+struct ContourCornerRequest {
+  ContourCornerKind kind = ContourCornerKind::None;
+  double size_mm = 0.0;
+  double feed_mm_s = 0.0;  // FRC / FRCM converted (0: the feed of the next block)
+  bool modal = false;      // from RNDM (the label says so)
+  int program_level = 0;   // the block's program level (the next motion must be in the same)
+};
+
 struct PathElement {
   ElementKind kind = ElementKind::Line;
   geometry::CurvePtr curve;      // set for Line, Arc, SplineSpan
@@ -140,6 +151,8 @@ struct PathElement {
   SmoothingRequest smoothing;
   double smoothing_deviation_mm = -1.0;
   double block_length_mm = 0.0;
+  // A chamfer or rounding programmed at the end of the element (interpreter output only).
+  ContourCornerRequest corner;
 
   // The length the path feed F refers to and the planner plans along (FGROUP, PGA Fundamentals
   // "Feedrate (G93, G94, G95, F, FGROUP)"): the geometry's length if the geometry axes are in the

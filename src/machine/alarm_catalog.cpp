@@ -65,6 +65,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990012, S::Warning, "Tool or cutting edge not in the tool table", A::Drycut},
     AlarmInfo{990013, S::Warning, "Programmed value limited by the machine data", A::Drycut},
     AlarmInfo{990014, S::Warning, "Program waits for an input or PLC signal; the wait is taken as ended at once", A::Drycut},
+    AlarmInfo{990015, S::Warning, "Chamfer or rounding reduced: the blocks are too short for the programmed value", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };
 

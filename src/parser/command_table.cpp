@@ -72,12 +72,10 @@ constexpr std::array kCommands{
     CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
     CommandEntry{"ORIPATH", N}, CommandEntry{"ORIPATHS", N}, CommandEntry{"STOPREOF", N},
     CommandEntry{"FA", M},      CommandEntry{"DYNPREC", M},
-    // Contour definitions written into G1/G2/G3 blocks (Fundamentals, "Chamfer, rounding" and
-    // "Contour definitions"): the corner is rounded or chamfered, the end point follows from an
-    // angle. Not modelled yet: the block runs to its programmed corner (a warning names it).
-    CommandEntry{"RND", N},     CommandEntry{"RNDM", N},    CommandEntry{"CHF", N},
-    CommandEntry{"CHR", N},     CommandEntry{"ANG", N},     CommandEntry{"FRC", N},
-    CommandEntry{"FRCM", N},
+    // Contour definition by an angle (Fundamentals, "Contour definitions"): the end point
+    // follows from ANG. Not modelled yet: the block runs to its programmed point (a warning).
+    // The corner words RND, RNDM, CHF, CHR, FRC, FRCM are addresses (kAddresses below).
+    CommandEntry{"ANG", N},
     // Smooth approach and retraction parameters, G75/G751 fixed point, tool offsets along the
     // path, lead/tilt angles, continuous measurement (Fundamentals, Job Planning).
     CommandEntry{"DISR", N},    CommandEntry{"DISRP", N},   CommandEntry{"FAD", N},
@@ -128,11 +126,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 46> kAddresses{
+constexpr std::array<std::string_view, 52> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{

@@ -1,0 +1,211 @@
+#include "interp/contour_corners.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "interp/geometry/arc_curve.hpp"
+#include "interp/geometry/line_curve.hpp"
+
+namespace drycut::interp {
+
+namespace {
+
+constexpr int kNotModelled = 990002;
+constexpr int kReduced = 990015;
+constexpr double kAngleEps = 1e-9;   // radians: below it the blocks are parallel / reversing
+constexpr double kLengthEps = 1e-9;  // mm
+// More blocks than this without motion in the plane between the two: no corner (the manual).
+constexpr int kMaxBlocksBetween = 3;
+
+const char* kind_name(const ContourCornerRequest& r) {
+  switch (r.kind) {
+    case ContourCornerKind::Round: return r.modal ? "RNDM" : "RND";
+    case ContourCornerKind::Chamfer: return "CHF";
+    case ContourCornerKind::ChamferLeg: return "CHR";
+    case ContourCornerKind::None: break;
+  }
+  return "";
+}
+
+geometry::Vec3 plane_normal(const CompensationRequest& c) {
+  if (c.tilted) return c.tilted_normal.normalized();
+  geometry::Vec3 n = geometry::Vec3::Zero();
+  n[c.plane_normal_axis] = 1.0;
+  return n;
+}
+
+bool same_plane(const PathElement& a, const PathElement& b) {
+  return a.compensation.plane_normal_axis == b.compensation.plane_normal_axis &&
+         (plane_normal(a.compensation) - plane_normal(b.compensation)).norm() < 1e-9;
+}
+
+bool is_straight(const PathElement& e) {
+  // G0/G1 only (a thread or POLY block is a Line element too; its label names it).
+  return e.kind == ElementKind::Line && e.curve && e.extra_axes.empty() && (e.label == "G0" || e.label == "G1");
+}
+
+}  // namespace
+
+double corner_leg(ContourCornerKind kind, double size_mm, double theta) {
+  switch (kind) {
+    case ContourCornerKind::Round: return size_mm * std::tan(theta / 2);
+    case ContourCornerKind::Chamfer: return size_mm / (2 * std::cos(theta / 2));
+    case ContourCornerKind::ChamferLeg: return size_mm;
+    case ContourCornerKind::None: break;
+  }
+  return 0.0;
+}
+
+double corner_size_for_leg(ContourCornerKind kind, double leg_mm, double theta) {
+  switch (kind) {
+    case ContourCornerKind::Round: return leg_mm / std::tan(theta / 2);
+    case ContourCornerKind::Chamfer: return leg_mm * 2 * std::cos(theta / 2);
+    case ContourCornerKind::ChamferLeg: return leg_mm;
+    case ContourCornerKind::None: break;
+  }
+  return 0.0;
+}
+
+std::optional<CornerGeometry> corner_geometry(ContourCornerKind kind, double size_mm, const geometry::Vec3& corner,
+                                              const geometry::Vec3& u1, const geometry::Vec3& u2) {
+  const double theta = std::acos(std::clamp(u1.dot(u2), -1.0, 1.0));
+  if (!(theta > kAngleEps && theta < std::numbers::pi - kAngleEps) || !(size_mm > 0)) return std::nullopt;
+  CornerGeometry g;
+  g.leg = corner_leg(kind, size_mm, theta);
+  const geometry::Vec3 p1 = corner - g.leg * u1, p2 = corner + g.leg * u2;
+  if (kind == ContourCornerKind::Round) {
+    const geometry::Vec3 w = (u2 - u2.dot(u1) * u1).normalized();
+    const geometry::Vec3 centre = p1 + size_mm * w;
+    g.curve = std::make_shared<geometry::ArcCurve>(centre, size_mm, -w, u1, 0.0, theta, 0.0);
+  } else {
+    g.curve = std::make_shared<geometry::LineCurve>(p1, p2);
+  }
+  return g;
+}
+
+void ContourCorners::warn(const PathElement& at, const std::string& what) {
+  // Once per text and line: RNDM over a loop must not print it a thousand times.
+  if (!warned_.insert(what + '@' + at.source.file_name() + ':' + std::to_string(at.source.line)).second) return;
+  diagnostics_.warn(kNotModelled, what, SourceLocation{at.source.file_name(), at.source.line, 0}, at.source.text);
+}
+
+void ContourCorners::hold(PathElement&& line) {
+  pending_ = std::move(line);
+  between_.clear();
+  blocks_since_ = 0;
+}
+
+void ContourCorners::flush() {
+  if (pending_) next_.consume(std::move(*pending_));
+  pending_.reset();
+  for (auto& e : between_) next_.consume(std::move(e));
+  between_.clear();
+}
+
+void ContourCorners::give_up(const std::string& why, bool modal_silent) {
+  // RNDM before a stop or the end: there is no corner to round, nothing is lost.
+  if (!(modal_silent && pending_->corner.modal))
+    warn(*pending_, std::string(kind_name(pending_->corner)) + " " + why + ": not modelled, the corner stays sharp");
+  flush();
+}
+
+void ContourCorners::consume(PathElement&& element) {
+  if (pending_ && !element.is_motion()) {
+    if (element.kind == ElementKind::DynamicsChange) {
+      between_.push_back(std::move(element));
+      return;
+    }
+    give_up("with a dwell, stop, tool change or positioning before the next motion", true);
+  }
+  if (pending_ && !insert_corner(element)) flush();
+  if (element.corner.kind == ContourCornerKind::None) {
+    next_.consume(std::move(element));
+    return;
+  }
+  if (!is_straight(element)) {
+    warn(element, std::string(kind_name(element.corner)) + " at the end of a " + element.label +
+                      " block (only between straight blocks modelled: the corner stays sharp)");
+    element.corner = {};
+    next_.consume(std::move(element));
+    return;
+  }
+  hold(std::move(element));
+}
+
+void ContourCorners::finish() {
+  if (pending_) give_up("without a following traversing block", true);
+  next_.finish();
+}
+
+bool ContourCorners::insert_corner(PathElement& b) {
+  PathElement& a = *pending_;
+  if (!is_straight(b) && b.kind == ElementKind::Line) {
+    give_up("before a block moving extra axes");
+    return true;
+  }
+  if (!is_straight(b) || !is_straight(a)) {
+    give_up("before a " + b.label + " block, modelled only between straight G0/G1 blocks");
+    return true;
+  }
+  if (b.corner.program_level != a.corner.program_level) {
+    give_up("with the next motion in another program level");
+    return true;
+  }
+  // The manual: no corner across a plane change or after more than three blocks between.
+  if (!same_plane(a, b) || blocks_since_ - 1 > kMaxBlocksBetween) return false;
+  const geometry::Vec3 n = plane_normal(a.compensation);
+  const geometry::Vec3 start = a.curve->start(), corner = a.curve->end(), end = b.curve->end();
+  const double la = a.curve->length(), lb = b.curve->length();
+  if (la < kLengthEps || lb < kLengthEps) return false;
+  const geometry::Vec3 u1 = (corner - start) / la, u2 = (end - corner) / lb;
+  if (std::abs(u1.dot(n)) > 1e-9 || std::abs(u2.dot(n)) > 1e-9) {
+    give_up("between blocks with a component along the plane normal");
+    return true;
+  }
+  const double theta = std::acos(std::clamp(u1.dot(u2), -1.0, 1.0));
+  if (theta >= std::numbers::pi - kAngleEps) {
+    give_up("at a reversal of direction");
+    return true;
+  }
+  double size = a.corner.size_mm;
+  std::optional<CornerGeometry> g = corner_geometry(a.corner.kind, size, corner, u1, u2);
+  if (!g) return false;  // parallel: no corner
+  const double room = std::min(la, lb);
+  if (g->leg > room + kLengthEps) {
+    const double reduced = corner_size_for_leg(a.corner.kind, room, theta);
+    char text[160];
+    std::snprintf(text, sizeof text, "%s=%.4g reduced to %.4g mm: the blocks are too short", kind_name(a.corner),
+                  size, reduced);
+    diagnostics_.warn(kReduced, text, SourceLocation{a.source.file_name(), a.source.line, 0}, a.source.text);
+    size = reduced;
+    g = corner_geometry(a.corner.kind, size, corner, u1, u2);
+    if (!g) return false;
+  }
+  const geometry::Vec3 p1 = g->curve->start(), p2 = g->curve->end();
+
+  PathElement inserted = a;
+  inserted.kind = a.corner.kind == ContourCornerKind::Round ? ElementKind::Arc : ElementKind::Line;
+  inserted.curve = g->curve;
+  inserted.label = kind_name(a.corner);
+  inserted.rapid = b.rapid;
+  inserted.feed_mm_s = b.rapid ? 0.0 : a.corner.feed_mm_s > 0 ? a.corner.feed_mm_s : b.feed_mm_s;
+  inserted.compressible = false;
+  inserted.corner = {};
+  a.dynamics.exact_stop_this_block = false;  // G9 acts at the end of the block, after the corner
+  a.corner = {};
+  if ((p1 - start).norm() > kLengthEps) {
+    a.curve = std::make_shared<geometry::LineCurve>(start, p1);
+    next_.consume(std::move(a));
+  }
+  pending_.reset();
+  next_.consume(std::move(inserted));
+  for (auto& e : between_) next_.consume(std::move(e));
+  between_.clear();
+  b.curve = std::make_shared<geometry::LineCurve>(p2, end);
+  ++inserted_;
+  return true;
+}
+
+}  // namespace drycut::interp
