@@ -280,8 +280,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
     if (found) {
       // Structures that start at or after the target are left (and entered again later).
       auto& stack = f.control;
-      const size_t depth = stack.size();
-      size_t kept = depth;
+      size_t kept = stack.size();
       while (kept > 0 && stack[kept - 1].head.line >= found->line) --kept;
       std::vector<ControlFrame> left(stack.begin() + static_cast<std::ptrdiff_t>(kept), stack.end());
       stack.resize(kept);
