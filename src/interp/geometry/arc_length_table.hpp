@@ -15,7 +15,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 namespace drycut::geometry {
@@ -39,8 +38,6 @@ inline constexpr size_t kMaxIntervals = size_t{1} << 16;
 
 class ArcLengthTable {
  public:
-  using Speed = std::function<double(double)>;
-
   ArcLengthTable() = default;
   template <typename SpeedFn>
   ArcLengthTable(const SpeedFn& speed, double u_begin, double u_end);

@@ -10,8 +10,7 @@ constexpr int kCurvatureSamples = 32;  // equal parameter steps for max_curvatur
 }  // namespace
 
 PolynomialCurve::PolynomialCurve(const Coefficients& coefficients, double p_end) : a_(coefficients), p_end_(p_end) {
-  const ArcLengthTable::Speed sp = [this](double p) { return speed(p); };
-  table_ = ArcLengthTable(sp, 0.0, p_end_);
+  table_ = ArcLengthTable([this](double p) { return speed(p); }, 0.0, p_end_);
 }
 
 PolynomialCurve PolynomialCurve::through(const Vec3& start, const Vec3& end,
@@ -47,20 +46,12 @@ ParametricDerivatives PolynomialCurve::derivatives(double p) const {
 }
 
 CurvePoint PolynomialCurve::at(double s) const {
-  const ArcLengthTable::Speed sp = [this](double p) { return speed(p); };
-  return PolynomialSpan::by_arc_length(derivatives(table_.parameter_at(sp, s)));
+  return PolynomialSpan::by_arc_length(derivatives(table_.parameter_at([this](double p) { return speed(p); }, s)));
 }
 
 double PolynomialCurve::max_curvature() const {
-  if (max_curvature_ < 0.0) {
-    double largest = 0.0;
-    for (int i = 0; i <= kCurvatureSamples; ++i) {
-      const ParametricDerivatives d = derivatives(p_end_ * i / kCurvatureSamples);
-      const double v = d.d1.norm();
-      if (v > 0.0) largest = std::max(largest, d.d1.cross(d.d2).norm() / (v * v * v));
-    }
-    max_curvature_ = largest;
-  }
+  if (max_curvature_ < 0.0)
+    max_curvature_ = sampled_max_curvature([this](double p) { return derivatives(p); }, p_end_, kCurvatureSamples);
   return max_curvature_;
 }
 

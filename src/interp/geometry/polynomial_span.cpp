@@ -38,15 +38,8 @@ PolynomialSpan::PolynomialSpan(const Eigen::Matrix4d& coefficients, double u_end
 }
 
 double PolynomialSpan::max_curvature() const {
-  if (max_curvature_ < 0.0) {
-    double largest = 0.0;
-    for (int i = 0; i <= kCurvatureSamples; ++i) {
-      const ParametricDerivatives d = derivatives(u_end_ * i / kCurvatureSamples);
-      const double v = d.d1.norm();
-      if (v > 0.0) largest = std::max(largest, d.d1.cross(d.d2).norm() / (v * v * v));
-    }
-    max_curvature_ = largest;
-  }
+  if (max_curvature_ < 0.0)
+    max_curvature_ = sampled_max_curvature([this](double u) { return derivatives(u); }, u_end_, kCurvatureSamples);
   return max_curvature_;
 }
 

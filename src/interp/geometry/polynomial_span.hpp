@@ -3,6 +3,8 @@
 //   H(u) = c0 + c1 u + c2 u^2 + c3 u^3,  H = (w x, w y, w z, w),  u in [0, u_end],
 // so P(u) = H.xyz / H.w. Polynomial splines (Akima, cubic) have w == 1; NURBS spans of degree
 // <= 3 are rational. Evaluated by arc length through an ArcLengthTable.
+#include <algorithm>
+
 #include <Eigen/Core>
 
 #include "interp/geometry/arc_length_table.hpp"
@@ -14,6 +16,20 @@ namespace drycut::geometry {
 struct ParametricDerivatives {
   Vec3 p, d1, d2, d3;
 };
+
+// Largest curvature |P' x P''| / |P'|^3 of a parametric curve on [0, end], sampled at
+// `samples` equal parameter steps (both ends included); `derivatives(u)` gives
+// ParametricDerivatives. Used by the spans' max_curvature() (asked by cutter compensation).
+template <typename DerivativesFn>
+double sampled_max_curvature(const DerivativesFn& derivatives, double end, int samples) {
+  double largest = 0.0;
+  for (int i = 0; i <= samples; ++i) {
+    const ParametricDerivatives d = derivatives(end * i / samples);
+    const double v = d.d1.norm();
+    if (v > 0.0) largest = std::max(largest, d.d1.cross(d.d2).norm() / (v * v * v));
+  }
+  return largest;
+}
 
 class PolynomialSpan final : public Curve {
  public:
