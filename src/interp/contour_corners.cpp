@@ -19,16 +19,6 @@ constexpr double kLengthEps = 1e-9;  // mm
 // More blocks than this without motion in the plane between the two: no corner (the manual).
 constexpr int kMaxBlocksBetween = 3;
 
-const char* kind_name(const ContourCornerRequest& r) {
-  switch (r.kind) {
-    case ContourCornerKind::Round: return r.modal ? "RNDM" : "RND";
-    case ContourCornerKind::Chamfer: return "CHF";
-    case ContourCornerKind::ChamferLeg: return "CHR";
-    case ContourCornerKind::None: break;
-  }
-  return "";
-}
-
 geometry::Vec3 plane_normal(const CompensationRequest& c) {
   if (c.tilted) return c.tilted_normal.normalized();
   geometry::Vec3 n = geometry::Vec3::Zero();
@@ -47,6 +37,16 @@ bool is_straight(const PathElement& e) {
 }
 
 }  // namespace
+
+const char* corner_word(const ContourCornerRequest& r) {
+  switch (r.kind) {
+    case ContourCornerKind::Round: return r.modal ? "RNDM" : "RND";
+    case ContourCornerKind::Chamfer: return "CHF";
+    case ContourCornerKind::ChamferLeg: return "CHR";
+    case ContourCornerKind::None: break;
+  }
+  return "";
+}
 
 double corner_leg(ContourCornerKind kind, double size_mm, double theta) {
   switch (kind) {
@@ -107,7 +107,7 @@ void ContourCorners::flush() {
 void ContourCorners::give_up(const std::string& why, bool modal_silent) {
   // RNDM before a stop or the end: there is no corner to round, nothing is lost.
   if (!(modal_silent && pending_->corner.modal))
-    warn(*pending_, std::string(kind_name(pending_->corner)) + " " + why + ": not modelled, the corner stays sharp");
+    warn(*pending_, std::string(corner_word(pending_->corner)) + " " + why + ": not modelled, the corner stays sharp");
   flush();
 }
 
@@ -125,7 +125,7 @@ void ContourCorners::consume(PathElement&& element) {
     return;
   }
   if (!is_straight(element)) {
-    warn(element, std::string(kind_name(element.corner)) + " at the end of a " + element.label +
+    warn(element, std::string(corner_word(element.corner)) + " at the end of a " + element.label +
                       " block (only between straight blocks modelled: the corner stays sharp)");
     element.corner = {};
     next_.consume(std::move(element));
@@ -176,7 +176,7 @@ bool ContourCorners::insert_corner(PathElement& b) {
   if (g->leg > room + kLengthEps) {
     const double reduced = corner_size_for_leg(a.corner.kind, room, theta);
     char text[160];
-    std::snprintf(text, sizeof text, "%s=%.4g reduced to %.4g mm: the blocks are too short", kind_name(a.corner),
+    std::snprintf(text, sizeof text, "%s=%.4g reduced to %.4g mm: the blocks are too short", corner_word(a.corner),
                   size, reduced);
     diagnostics_.warn(kReduced, text, SourceLocation{a.source.file_name(), a.source.line, 0}, a.source.text);
     size = reduced;
@@ -188,7 +188,7 @@ bool ContourCorners::insert_corner(PathElement& b) {
   PathElement inserted = a;
   inserted.kind = a.corner.kind == ContourCornerKind::Round ? ElementKind::Arc : ElementKind::Line;
   inserted.curve = g->curve;
-  inserted.label = kind_name(a.corner);
+  inserted.label = corner_word(a.corner);
   inserted.rapid = b.rapid;
   inserted.feed_mm_s = b.rapid ? 0.0 : a.corner.feed_mm_s > 0 ? a.corner.feed_mm_s : b.feed_mm_s;
   inserted.compressible = false;

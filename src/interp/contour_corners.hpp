@@ -55,6 +55,8 @@ struct CornerGeometry {
 };
 std::optional<CornerGeometry> corner_geometry(ContourCornerKind kind, double size_mm, const geometry::Vec3& corner,
                                               const geometry::Vec3& u1, const geometry::Vec3& u2);
+// The word that asks for the corner: RND, RNDM (modal rounding), CHF or CHR.
+const char* corner_word(const ContourCornerRequest& r);
 // The leg a chamfer or rounding of this size has at a change of direction θ (radians).
 double corner_leg(ContourCornerKind kind, double size_mm, double theta);
 // The size that gives leg t (the inverse, for the reduction).

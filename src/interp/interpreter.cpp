@@ -43,8 +43,12 @@ void Interpreter::raise(const BlockContext& ctx, int number, const std::string& 
 }
 
 void Interpreter::warn_once(const BlockContext& ctx, const std::string& what, uint32_t column) {
+  warn_once(ctx, kNotModelled, what, column);
+}
+
+void Interpreter::warn_once(const BlockContext& ctx, int number, const std::string& what, uint32_t column) {
   if (!warned_.insert(what).second) return;
-  diagnostics_.warn(kNotModelled, what, {ctx.file_name(), ctx.block.line, column}, ctx.block.text);
+  diagnostics_.warn(number, what, {ctx.file_name(), ctx.block.line, column}, ctx.block.text);
 }
 
 void Interpreter::execute(const parser::Block& block) {
@@ -350,8 +354,7 @@ void Interpreter::report_tool_notices(const BlockContext& ctx, const std::vector
                                       uint32_t column) {
   for (const ToolNotice& n : notices) {
     if (n.alarm) raise(ctx, n.number, n.detail, column);
-    if (warned_.insert(n.detail).second)
-      diagnostics_.warn(n.number, n.detail, {ctx.file_name(), ctx.block.line, column}, ctx.block.text);
+    warn_once(ctx, n.number, n.detail, column);
   }
 }
 
@@ -393,8 +396,7 @@ double Interpreter::spindle_speed(const BlockContext& ctx) {
       const std::string what = "S" + std::to_string(static_cast<long>(rpm)) +
                                " above the spindle's maximum (MD35100): limited to " +
                                std::to_string(static_cast<long>(profile_.max_spindle_speed_rpm)) + " rpm";
-      if (warned_.insert(what).second)
-        diagnostics_.warn(kValueLimited, what, {ctx.file_name(), ctx.block.line, 0}, ctx.block.text);
+      warn_once(ctx, kValueLimited, what, 0);
       return profile_.max_spindle_speed_rpm;
     }
     return rpm;

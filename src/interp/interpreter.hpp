@@ -148,7 +148,9 @@ class Interpreter {
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
                           uint32_t column = 0) const;
+  // A warning once per text: 990002 (not modelled), or the given catalogue number.
   void warn_once(const BlockContext& ctx, const std::string& what, uint32_t column);
+  void warn_once(const BlockContext& ctx, int number, const std::string& what, uint32_t column);
   // "S2" -> 2 (the spindle of a numbered speed address S<n>=), 0 for any other name.
   static int numbered_spindle(std::string_view name);
   void apply_spindle_speed(BlockContext& ctx, const parser::AddressWord& a);  // S, S<n>=

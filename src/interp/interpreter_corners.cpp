@@ -54,8 +54,7 @@ void Interpreter::request_corner(BlockContext& ctx, PathElement& e) {
   ctx.corner_used = true;
   if (r.kind == ContourCornerKind::None) return;
   if (state_.motion != MotionMode::Rapid && state_.motion != MotionMode::Linear) {
-    const char* word = r.modal ? "RNDM" : r.kind == ContourCornerKind::Round ? "RND" : r.kind == ContourCornerKind::Chamfer ? "CHF" : "CHR";
-    warn_once(ctx, std::string(word) + " at the end of a " + std::string(motion_mode_name(state_.motion)) +
+    warn_once(ctx, std::string(corner_word(r)) + " at the end of a " + std::string(motion_mode_name(state_.motion)) +
                        " block (only between straight G0/G1 blocks modelled: the corner stays sharp)",
               ctx.corner_column);
     return;
@@ -76,8 +75,9 @@ void Interpreter::request_corner(BlockContext& ctx, PathElement& e) {
 
 void Interpreter::warn_unused_corner(BlockContext& ctx) {
   if (ctx.corner == ContourCornerKind::None || ctx.corner_used) return;
-  const char* word = ctx.corner == ContourCornerKind::Round ? "RND" : ctx.corner == ContourCornerKind::Chamfer ? "CHF" : "CHR";
-  warn_once(ctx, std::string(word) + " in a block without a straight G0/G1 motion (not modelled)", ctx.corner_column);
+  ContourCornerRequest r;
+  r.kind = ctx.corner;
+  warn_once(ctx, std::string(corner_word(r)) + " in a block without a straight G0/G1 motion (not modelled)", ctx.corner_column);
 }
 
 }  // namespace drycut::interp

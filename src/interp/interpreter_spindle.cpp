@@ -37,8 +37,7 @@ double Interpreter::limit_to_g25_g26(const BlockContext& ctx, double rpm, bool c
   const std::string what = (constant_cutting_speed ? std::string("G96 spindle speed") : "S" + rpm_text(rpm)) +
                            (above ? " above the G26 limit" : " below the G25 limit") + ": limited to " +
                            rpm_text(limited) + " rpm";
-  if (warned_.insert(what).second)
-    diagnostics_.warn(kValueLimited, what, {ctx.file_name(), ctx.block.line, 0}, ctx.block.text);
+  warn_once(ctx, kValueLimited, what, 0);
   return limited;
 }
 

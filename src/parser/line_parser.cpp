@@ -531,11 +531,16 @@ void LineParser::parse_polynomial(ParsedLine& out, Item& item) {
   pos_ += 2;
   item.kind = ItemKind::Assign;
   std::array<ExprIndex, 8> values{};
+  parse_item_arguments(out, item, values, false, "too many polynomial values");
+}
+
+void LineParser::parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,
+                                      const char* too_many) {
   const auto count = static_cast<uint32_t>(
-      ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, values, false, "too many polynomial values"));
+      ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, buffer, empty_items, too_many));
   item.arg_first = static_cast<uint32_t>(out.pool.args.size());
   item.arg_count = count;
-  out.pool.args.insert(out.pool.args.end(), values.begin(), values.begin() + count);
+  out.pool.args.insert(out.pool.args.end(), buffer.begin(), buffer.begin() + count);
 }
 
 void LineParser::parse_words(ParsedLine& out) {
@@ -596,11 +601,7 @@ void LineParser::parse_words(ParsedLine& out) {
       item.kind = ItemKind::Procedure;
       // Arguments may be empty: CYCLE800(,"TABLE",1)
       std::array<ExprIndex, 64> args{};
-      const auto count = static_cast<uint32_t>(
-          ExpressionParser(tokens_, pos_, out.pool).list(TokenKind::RParen, args, true, "too many arguments"));
-      item.arg_first = static_cast<uint32_t>(out.pool.args.size());
-      item.arg_count = count;
-      out.pool.args.insert(out.pool.args.end(), args.begin(), args.begin() + count);
+      parse_item_arguments(out, item, args, true, "too many arguments");
     } else {
       ++pos_;
       std::string_view letters;

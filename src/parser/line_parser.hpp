@@ -2,6 +2,7 @@
 // Turns one line into a ParsedLine (syntax only). Owns the lexer so one LineParser, reused,
 // parses a whole program without per-line allocation.
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -23,6 +24,9 @@ class LineParser {
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_words(ParsedLine& out);
   void parse_polynomial(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..)
+  // The values up to ')' (after '(') into the pool's argument list as item.arg_first/arg_count.
+  void parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,
+                            const char* too_many);
   void parse_jump_target(ParsedLine& out);
   void parse_jump_target(ParsedLine& out, JumpTarget& target);
   void parse_type(DefEntry& e);
