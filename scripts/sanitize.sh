@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds everything with AddressSanitizer + UndefinedBehaviorSanitizer (-DDRYCUT_SANITIZE=ON,
-# Debug at -O1 to keep CI time reasonable) in its own build folder and runs the whole CTest
+# Debug at -O1 to keep CI time reasonable; -g1 keeps the file:line of sanitizer stack traces but
+# drops variable debug info, which cut the compile time of a TU by 30-45 %) in its own build folder and runs the whole CTest
 # suite. Any sanitizer report stops the process (halt_on_error) and so fails its test; leaks
 # count (detect_leaks). The end-to-end tests run the sanitized drycut binary, which inherits
 # these options. Usage: scripts/sanitize.sh [build dir]   (default: build-sanitize)
@@ -9,7 +10,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build-sanitize}
 jobs=${JOBS:-2}
 
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g1 -O1" \
   -DDRYCUT_SANITIZE=ON -DDRYCUT_BUILD_TESTS=ON
 cmake --build "$build" -j "$jobs"
 
