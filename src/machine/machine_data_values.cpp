@@ -43,7 +43,27 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
       md["$MA_COMPRESS_POS_TOL[" + axis + "]"] = a.compress_pos_tol_mm;         // MD33100
     }
   }
+  // MD20050 / MD20070: geometry axis g is channel axis g + 1, channel axis c is machine axis c.
+  const size_t channel_axes = p.axes.size() + p.extra_axes.size();
+  for (size_t g = 0; g < p.axes.size(); ++g) md["$MC_AXCONF_GEOAX_ASSIGN_TAB[" + std::to_string(g) + "]"] = g + 1.0;
+  for (size_t c = 0; c < channel_axes; ++c) md["$MC_AXCONF_MACHAX_USED[" + std::to_string(c) + "]"] = c + 1.0;
   for (const auto& [name, value] : p.machine_data) md[name] = value;
+  return md;
+}
+
+std::map<std::string, std::string, std::less<>> machine_data_texts(const MachineProfile& p) {
+  std::map<std::string, std::string, std::less<>> md;
+  size_t c = 0;
+  auto channel_axis = [&](const std::string& name) {
+    md["$MC_AXCONF_CHANAX_NAME_TAB[" + std::to_string(c) + "]"] = name;
+    md["$MN_AXCONF_MACHAX_NAME_TAB[" + std::to_string(c) + "]"] = name + "1";
+    ++c;
+  };
+  for (size_t g = 0; g < p.axes.size(); ++g) {
+    md["$MC_AXCONF_GEOAX_NAME_TAB[" + std::to_string(g) + "]"] = p.axes[g].name;
+    channel_axis(p.axes[g].name);
+  }
+  for (const AxisData& a : p.extra_axes) channel_axis(a.name);
   return md;
 }
 

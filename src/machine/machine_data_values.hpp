@@ -11,4 +11,11 @@ namespace drycut::machine {
 
 std::map<std::string, double, std::less<>> machine_data_values(const MachineProfile& profile);
 
+// The axis configuration as machine data of type STRING (machine-builder macros read the names
+// to find an axis): MD20060 $MC_AXCONF_GEOAX_NAME_TAB (the geometry axes), MD20080
+// $MC_AXCONF_CHANAX_NAME_TAB (geometry axes, then the further channel axes in profile order)
+// and MD10000 $MN_AXCONF_MACHAX_NAME_TAB (the machine axes: channel axis name + "1", as the
+// defaults X1, Y1, Z1 ...). Indices from 0, as the control's arrays.
+std::map<std::string, std::string, std::less<>> machine_data_texts(const MachineProfile& profile);
+
 }  // namespace drycut::machine

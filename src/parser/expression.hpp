@@ -30,11 +30,14 @@ enum class ExprOp : uint8_t {
 enum class Function : uint8_t {
   Sin, Cos, Tan, Asin, Acos, Atan2, Sqrt, Abs, Pot, Trunc, Round, RoundUp, Ln, Exp, Min, Max,
   Bound, QuickOutput, IsAxis,
+  ToReal, ToInt, ToBool,  // ITOR/BTOR, RTOI/BTOI, ITOB/RTOB: type conversions
   // Strings
   StrLen, Index, RIndex, MIndex, SubStr, ToUpper, ToLower, Number, IsNumber, Sprint, AxName,
-  AxString,
+  AxString, Match,
   // Answered by the program's environment (variables, tools, frames)
-  IsVar, IsFile, GetT, FrameFunction, StringIs, Spindle,
+  IsVar, IsFile, GetT, FrameFunction, StringIs, Spindle, NameToInt,
+  CircleData,  // CALCDAT(points, n, result): reads and writes arrays by reference
+  Assumed,     // valid predefined function drycut does not compute: warned, FunctionInfo::assumed
   // Position modes: only as the whole value of an address
   AbsoluteMode,     // AC(x)
   IncrementalMode,  // IC(x)

@@ -147,16 +147,19 @@ class Evaluator {
       case Function::StrLen: case Function::Index: case Function::RIndex: case Function::MIndex:
       case Function::SubStr: case Function::ToUpper: case Function::ToLower: case Function::Number:
       case Function::IsNumber: case Function::Sprint: case Function::AxName: case Function::AxString:
+      case Function::Match:
       case Function::IsVar: case Function::IsFile: case Function::GetT: case Function::FrameFunction:
-      case Function::StringIs: case Function::Spindle: {
+      case Function::StringIs: case Function::Spindle: case Function::NameToInt: {
         std::vector<Value> args;
         args.reserve(n.b);
         for (uint32_t k = 0; k < n.b; ++k) args.push_back(eval(pool_.args[n.a + k]));
         if (n.func == Function::IsVar || n.func == Function::IsFile || n.func == Function::GetT ||
-            n.func == Function::FrameFunction || n.func == Function::StringIs || n.func == Function::Spindle)
+            n.func == Function::FrameFunction || n.func == Function::StringIs || n.func == Function::Spindle ||
+            n.func == Function::NameToInt)
           return vars_.environment_function(n, args);
         return string_function(n.func, args, n.column);
       }
+      case Function::CircleData: case Function::Assumed: return vars_.reference_function(n, pool_);
       case Function::AbsoluteMode: case Function::IncrementalMode: case Function::DirectMode:
       case Function::AbsolutePositive: case Function::AbsoluteNegative:
         throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an address");
@@ -202,6 +205,9 @@ class Evaluator {
       case Function::Exp: return checked(std::exp(x), n.column);
       case Function::Min: return std::fmin(x, arg(n, 1));
       case Function::Max: return std::fmax(x, arg(n, 1));
+      case Function::ToReal: return x;
+      case Function::ToInt: return std::round(x);  // REAL -> INT rounds, halves away from zero
+      case Function::ToBool: return x != 0.0 ? 1.0 : 0.0;
       case Function::QuickOutput: return x;  // M=QU(8): M8, output without waiting (same path)
       case Function::IsAxis: return x >= 1 && x <= 3 ? 1.0 : 0.0;  // geometry axes 1..3 exist
       case Function::Bound: {  // BOUND(min, max, value)
@@ -220,6 +226,10 @@ class Evaluator {
 }  // namespace
 
 Value VariableSource::environment_function(const ExprNode& call, std::span<const Value>) const {
+  throw LineError(12550, call.column, "function " + std::string(call.text) + " not available here");
+}
+
+Value VariableSource::reference_function(const ExprNode& call, const ExprPool&) const {
   throw LineError(12550, call.column, "function " + std::string(call.text) + " not available here");
 }
 

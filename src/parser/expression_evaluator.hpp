@@ -25,6 +25,10 @@ class VariableSource {
   virtual double r_parameter(double index, uint32_t column) const = 0;
   // Functions answered by the program's environment: ISVAR, GETT, the frame functions.
   virtual Value environment_function(const ExprNode& call, std::span<const Value> args) const;
+  // Functions whose arguments are not (all) values: CALCDAT reads and writes arrays named by its
+  // arguments, an assumed function (Function::Assumed) evaluates none of them (they may be
+  // VAR results). `pool` holds the call's argument nodes.
+  virtual Value reference_function(const ExprNode& call, const ExprPool& pool) const;
 };
 
 Value evaluate_value(const ExprPool& pool, ExprIndex root, const VariableSource& vars);

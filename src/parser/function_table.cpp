@@ -1,6 +1,8 @@
 #include "parser/function_table.hpp"
 
 #include <array>
+#include <charconv>
+#include <string>
 
 namespace drycut::parser {
 namespace {
@@ -55,11 +57,104 @@ constexpr std::array kFunctions{
     FunctionInfo{"DC", F::DirectMode, 1, 1, "rotary axis to an absolute position the shortest way"},
     FunctionInfo{"ACP", F::AbsolutePositive, 1, 1, "rotary axis to an absolute position in positive direction"},
     FunctionInfo{"ACN", F::AbsoluteNegative, 1, 1, "rotary axis to an absolute position in negative direction"},
+    FunctionInfo{"CALCDAT", F::CircleData, 3, 3, "CALCDAT(points[n,2], 3 or 4, result[3]): circle centre and radius (4 points: mean of the centres of the triples, drycut's choice); FALSE when none"},
+    FunctionInfo{"MATCH", F::Match, 2, 2, "first position (from 0) of a string in a string, -1 if none"},
+    FunctionInfo{"ITOR", F::ToReal, 1, 1, "INT to REAL"},
+    FunctionInfo{"BTOR", F::ToReal, 1, 1, "BOOL to REAL"},
+    FunctionInfo{"RTOI", F::ToInt, 1, 1, "REAL to INT, rounded (halves away from zero)"},
+    FunctionInfo{"BTOI", F::ToInt, 1, 1, "BOOL to INT"},
+    FunctionInfo{"ITOB", F::ToBool, 1, 1, "INT to BOOL (not zero)"},
+    FunctionInfo{"RTOB", F::ToBool, 1, 1, "REAL to BOOL (not zero)"},
+    FunctionInfo{"NAMETOINT", F::NameToInt, 2, 3,
+                 "NAMETOINT(\"$MC_AXCONF_CHANAX_NAME_TAB\", \"X\"[, no alarm]): index of a name in a system array (from 0, inferred)"},
+    // Valid predefined functions drycut does not compute (Job Planning and NC Programming,
+    // "Predefined functions"; Function Manual Tool Management; K2 frames): warning 990002 and
+    // the result of a call that went well; "#n" is the value of argument n. VAR results stay.
+    FunctionInfo{"GETDNO", F::Assumed, 2, 2, "D number of cutting edge CE of tool T", "#2"},
+    FunctionInfo{"SETDNO", F::Assumed, 3, 3, "gives cutting edge CE of tool T the D number D", "TRUE"},
+    FunctionInfo{"CHKDNO", F::Assumed, 0, 3, "TRUE when the D numbers are unique", "TRUE"},
+    FunctionInfo{"CHKDM", F::Assumed, 1, 3, "checks D numbers unique in a magazine: 0", "0"},
+    FunctionInfo{"GETACTT", F::Assumed, 2, 2, "active tool of a tool group into VAR T: status", "0"},
+    FunctionInfo{"GETACTTD", F::Assumed, 2, 2, "tool of an absolute D number into VAR T: status", "0"},
+    FunctionInfo{"NEWT", F::Assumed, 1, 2, "creates a tool: its T number", "1"},
+    FunctionInfo{"DELDL", F::Assumed, 1, 2, "deletes additive offsets: status", "0"},
+    FunctionInfo{"DELMLRES", F::Assumed, 2, 3, "deletes a location reservation: status", "0"},
+    FunctionInfo{"DELMLOWNER", F::Assumed, 1, 1, "deletes a tool's owner location: status", "0"},
+    FunctionInfo{"NEWMT", F::Assumed, 2, 3, "creates a multitool: its number", "1"},
+    FunctionInfo{"TOOLENV", F::Assumed, 1, 1, "saves the tool environment: status", "0"},
+    FunctionInfo{"DELTOOLENV", F::Assumed, 0, 1, "deletes tool environments: status", "0"},
+    FunctionInfo{"GETTENV", F::Assumed, 2, 2, "reads a tool environment into VAR: status", "0"},
+    FunctionInfo{"GETTCOR", F::Assumed, 2, 7, "tool lengths into VAR: status", "0"},
+    FunctionInfo{"SETTCOR", F::Assumed, 2, 10, "changes tool components: status", "0"},
+    FunctionInfo{"TOOLGNT", F::Assumed, 1, 1, "number of tools in a tool group", "1"},
+    FunctionInfo{"TOOLGT", F::Assumed, 2, 2, "T number of the n-th tool of a group", "1"},
+    FunctionInfo{"GETVARTYP", F::Assumed, 1, 1, "data type code of a variable (4 = REAL)", "4"},
+    FunctionInfo{"GETVARPHU", F::Assumed, 1, 1, "physical unit code of a variable", "0"},
+    FunctionInfo{"GETVARAP", F::Assumed, 2, 2, "protection level of a variable", "7"},
+    FunctionInfo{"GETVARLIM", F::Assumed, 3, 3, "limit of a variable into VAR: status", "0"},
+    FunctionInfo{"GETVARDFT", F::Assumed, 2, 5, "default value of a variable into VAR: status", "0"},
+    FunctionInfo{"AXTOSPI", F::Assumed, 1, 1, "spindle number of an axis", "1"},
+    FunctionInfo{"MODAXVAL", F::Assumed, 2, 2, "modulo position of a rotary axis (the position)", "#2"},
+    FunctionInfo{"POSRANGE", F::Assumed, 3, 4, "TRUE when the axis is inside the window", "TRUE"},
+    FunctionInfo{"LENTOAX", F::Assumed, 3, 3, "tool lengths per geometry axis into VAR: status", "0"},
+    FunctionInfo{"CALCPOSI", F::Assumed, 4, 6, "distance to the software limits into VAR: status", "0"},
+    FunctionInfo{"INTERSEC", F::Assumed, 3, 4, "intersection of two contour elements into VAR", "TRUE"},
+    FunctionInfo{"CHECKSUM", F::Assumed, 2, 4, "checksum of an array into VAR: status", "0"},
+    FunctionInfo{"PROTD", F::Assumed, 2, 10, "distance of two protection areas", "0"},
+    FunctionInfo{"COLLPAIR", F::Assumed, 2, 3, "state of a collision pair", "0"},
+    FunctionInfo{"MEASURE", F::Assumed, 0, 30, "measuring calculation: status", "0"},
+    FunctionInfo{"ADDFRAME", F::Assumed, 2, 2, "chains a frame into a system frame: status", "0"},
+    FunctionInfo{"INVFRAME", F::Assumed, 1, 1, "inverse of a frame", "FRAME"},
+    FunctionInfo{"CRPL", F::Assumed, 2, 2, "rotation frame in a plane", "FRAME"},
+    FunctionInfo{"CROTS", F::Assumed, 2, 6, "rotation frame from solid angles", "FRAME"},
+    FunctionInfo{"MEAFRAME", F::Assumed, 3, 3, "frame from three measured points", "FRAME"},
+    // Curve tables (Function Manual Extended Functions M3, "Curve tables"): not modelled.
+    FunctionInfo{"CTAB", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABINV", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABEXISTS", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABFNO", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABFPOL", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABFSEG", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABID", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABISLOCK", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABMEMTYP", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABMPOL", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABMSEG", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABNO", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABNOMEM", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABPERIOD", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABPOL", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABPOLID", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABSEG", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABSEGID", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABSEV", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABSSV", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABTEP", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABTEV", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABTMAX", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABTMIN", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABTSP", F::Assumed, 0, 6, "curve table function", "0"},
+    FunctionInfo{"CTABTSV", F::Assumed, 0, 6, "curve table function", "0"},
     FunctionInfo{"SET", F::ArraySet, 1, 30, "NAME[i]=SET(a, b, ...): values for consecutive array elements from i"},
     FunctionInfo{"REP", F::ArrayRep, 1, 1, "NAME[i]=REP(v): v for element i and every element after it"},
 };
 
 }  // namespace
+
+Value assumed_result(const FunctionInfo& f) {
+  const std::string_view a = f.assumed;
+  if (a == "FRAME") {  // the null frame, in the text the interpreter computes frames from
+    Value v = Value::of_frame();
+    v.text = "CTRANS()";
+    return v;
+  }
+  if (a == "TRUE") return Value(1.0);
+  if (a == "FALSE") return Value(0.0);
+  if (a.size() >= 2 && a.front() == '"') return Value::of_text(std::string(a.substr(1, a.size() - 2)));
+  double v = 0.0;
+  std::from_chars(a.data(), a.data() + a.size(), v);
+  return Value(v);
+}
 
 const FunctionInfo* find_function(std::string_view upper_name) {
   for (const auto& f : kFunctions)

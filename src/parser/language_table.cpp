@@ -100,6 +100,13 @@ std::vector<LanguageFeature> language_features() {
   for (const Row& r : kOperators) add(out, "Operators", r.name, r.support, r.meaning);
   for (const FunctionInfo& f : all_functions()) {
     const bool frame = f.func == Function::FrameFunction;
+    if (f.func == Function::Assumed) {  // valid, not computed: the result a call that went well gives
+      const std::string result = f.assumed.starts_with('#') ? "argument " + std::string(f.assumed.substr(1))
+                                 : f.assumed == "FRAME"     ? "the null frame"
+                                                            : std::string(f.assumed);
+      add(out, "Functions", std::string(f.name), Support::NotModelled, std::string(f.meaning) + "; result taken: " + result);
+      continue;
+    }
     add(out, "Functions", std::string(f.name), Support::Modelled,
         std::string(f.meaning) + (frame ? " (computed where $P_UIFR/$P_PFRAME is written; `:` chains them)" : ""));
   }

@@ -49,8 +49,10 @@ class ProgramLoader::Scope : public VariableSource {
   Value variable(std::string_view name, std::span<const Value> indices, uint32_t column) const override;
   double r_parameter(double index, uint32_t column) const override;
   Value environment_function(const ExprNode& call, std::span<const Value> args) const override;
+  Value reference_function(const ExprNode& call, const ExprPool& pool) const override;
 
  private:
+  Value circle_data(const ExprNode& call, const ExprPool& pool) const;
   ProgramLoader& loader_;
 };
 

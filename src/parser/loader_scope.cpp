@@ -127,6 +127,23 @@ Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span
         throw LineError(12150, call.column, "SPI needs a spindle number 1, 2 ...");
       return Value::of_axis("SP" + std::to_string(static_cast<int64_t>(args[0].number)));
     }
+    case Function::NameToInt: {
+      // NAMETOINT(array name, name[, no alarm]): the index of `name` among the STRING elements of
+      // a system array such as $MC_AXCONF_CHANAX_NAME_TAB, counted from 0 like the array's own
+      // index (inferred: no manual at hand states the base). Not found: alarm 12550, or -1 when
+      // the third argument is TRUE.
+      if (args.size() < 2 || args[0].is_number() || args[1].is_number())
+        throw LineError(12150, call.column, "NAMETOINT needs an array name and a name as strings");
+      const std::string array = upper_ascii(args[0].text), wanted = upper_ascii(args[1].text);
+      for (int i = 0; i < 64; ++i) {
+        const Value index(static_cast<double>(i));
+        const auto r = l.system_variables_.read(array, std::span<const Value>(&index, 1));
+        if (r.assumed) break;
+        if (!r.value.is_number() && upper_ascii(r.value.text) == wanted) return Value(static_cast<double>(i));
+      }
+      if (args.size() > 2 && args[2].is_number() && args[2].number != 0) return Value(-1.0);
+      throw LineError(12550, call.column, "NAMETOINT: " + wanted + " is not in " + array);
+    }
     case Function::GetT: {
       if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");
       const Value key = Value::of_text(args[0].text);

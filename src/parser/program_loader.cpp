@@ -24,7 +24,7 @@ ProgramLoader::ProgramLoader(LoaderOptions options, Diagnostics& diagnostics)
       diagnostics_(diagnostics),
       scope_(std::make_unique<Scope>(*this)),
       r_parameters_(kRParameterCount, 0.0),
-      system_variables_(options_.machine_data) {
+      system_variables_(options_.machine_data, options_.machine_data_texts) {
   const auto scope = options_.machine_data.find("$MN_LUD_EXTENDED_SCOPE");
   program_global_data_ = scope != options_.machine_data.end() && scope->second != 0.0;
 }

@@ -44,6 +44,7 @@ struct LoaderOptions {
   std::vector<std::filesystem::path> definition_dirs;
   // Machine and setting data, inputs and PLC data by `$` name ("$MA_COMPRESS_POS_TOL[X1]").
   MachineDataMap machine_data;
+  MachineDataTexts machine_data_texts;  // machine data of type STRING (axis names)
   // Axis names of the machine beyond the standard X Y Z A B C U V W (and their numbered forms).
   std::vector<std::string> axis_names;
 };

@@ -63,6 +63,10 @@ Value string_function(Function f, std::span<const Value> args, uint32_t column) 
       const auto p = text_arg(args, 0, column).rfind(char_arg(args, 1, column));
       return Value(p == std::string::npos ? -1.0 : static_cast<double>(p));
     }
+    case Function::Match: {  // MATCH(s, part): first position of the string part, -1 if none
+      const auto p = text_arg(args, 0, column).find(text_arg(args, 1, column));
+      return Value(p == std::string::npos ? -1.0 : static_cast<double>(p));
+    }
     case Function::MIndex: {
       const auto p = text_arg(args, 0, column).find_first_of(text_arg(args, 1, column));
       return Value(p == std::string::npos ? -1.0 : static_cast<double>(p));

@@ -69,6 +69,7 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     last_input_ = key;
   }
   if (auto it = values_.find(key); it != values_.end()) return {Value(it->second), false};
+  if (auto it = text_values_.find(key); it != text_values_.end()) return {Value::of_text(it->second), false};
   if (view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) {
     ++view_reads_;
     if (auto v = view_->read_system_variable(name, indices)) return {*v, false};

@@ -43,10 +43,12 @@ class ControllerStateView {
 };
 
 using MachineDataMap = std::map<std::string, double, std::less<>>;
+using MachineDataTexts = std::map<std::string, std::string, std::less<>>;
 
 class SystemVariables {
  public:
-  explicit SystemVariables(MachineDataMap machine_data) : values_(std::move(machine_data)) {}
+  explicit SystemVariables(MachineDataMap machine_data, MachineDataTexts machine_texts = {})
+      : values_(std::move(machine_data)), text_values_(std::move(machine_texts)) {}
   void set_view(const ControllerStateView* view) { view_ = view; }
 
   struct ReadResult {
@@ -67,6 +69,7 @@ class SystemVariables {
 
  private:
   MachineDataMap values_;                                   // machine data, I/O (from the profile)
+  MachineDataTexts text_values_;                            // machine data of type STRING (profile)
   MachineDataMap written_;                                  // numbers written by the program
   MachineDataMap timer_start_;  // running $AC_TIMER[n]: the elapsed time at which it read 0
   std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
