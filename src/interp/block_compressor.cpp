@@ -17,7 +17,8 @@ const char* compressor_label(Compressor mode) {
 }
 
 bool same_dynamics(const DynamicsMode& a, const DynamicsMode& b) {
-  return a.transition == b.transition && a.profile == b.profile && a.exact_stop_this_block == b.exact_stop_this_block;
+  return a.transition == b.transition && a.profile == b.profile && a.exact_stop_this_block == b.exact_stop_this_block &&
+         a.limits == b.limits;
 }
 
 // A straight G1 element of a simple block (not one the compensation inserted: a transition

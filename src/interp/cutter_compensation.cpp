@@ -484,8 +484,13 @@ void CutterCompensation::apply_constant_contour_feed(PathElement& element, doubl
   // CFC (the reset default): F holds on the programmed contour. Over a stretch whose tool-centre
   // path is longer (outside) or shorter (inside) than the contour, the tool centre moves faster
   // or slower by that ratio; SD42528 CUTCOM_DECEL_LIMIT bounds the slow-down on inside curves.
+  // CFIN slows down inside only; CFTCP: F is the tool centre's feed, nothing is scaled.
+  const ContourFeed mode = element.compensation.contour_feed;
+  if (mode == ContourFeed::ToolCentre) return;
   if (contour_mm <= kNegligibleLength || centre_mm <= kNegligibleLength) return;
-  const double scale = std::max(centre_mm / contour_mm, profile_.cutcom_decel_limit);
+  double ratio = centre_mm / contour_mm;
+  if (mode == ContourFeed::InsideOnly) ratio = std::min(ratio, 1.0);
+  const double scale = std::max(ratio, profile_.cutcom_decel_limit);
   element.feed_scale = scale;
   element.feed_mm_s *= scale;
 }

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string_view>
 
+#include "parser/block.hpp"
+
 namespace drycut::interp {
 
 enum class DiameterMode {
@@ -38,6 +40,14 @@ struct DiameterState {
       case DiameterMode::Absolute90: return incremental ? 1.0 : 0.5;
       default: return 1.0;
     }
+  }
+  // The same for a value written with its mode: DAC/DIC are diameters, RAC/RIC radii whatever
+  // the axis's mode is; other values as position_factor says.
+  double value_factor(int i, parser::ValueMode written, bool incremental) const {
+    using parser::ValueMode;
+    if (written == ValueMode::DiameterAbsolute || written == ValueMode::DiameterIncremental) return 0.5;
+    if (written == ValueMode::RadiusAbsolute || written == ValueMode::RadiusIncremental) return 1.0;
+    return position_factor(i, incremental);
   }
   bool any_diameter_axis() const {
     for (int i = 0; i < 3; ++i)

@@ -76,8 +76,10 @@ ExtraAxes::Travel ExtraAxes::travel_to(size_t i, double value, ValueMode mode, b
     t.travel = way(wrap_modulo(p, range), wrap_modulo(value, range), range, mode);
     return t;
   }
-  const double scale = a.rotary ? 1.0 : unit;
-  const bool incremental = mode == ValueMode::Incremental || (mode == ValueMode::Default && !absolute);
+  // DAC/DIC: a diameter value, half of it is the axis's travel (RAC/RIC: a radius, as written).
+  const bool diameter = mode == ValueMode::DiameterAbsolute || mode == ValueMode::DiameterIncremental;
+  const double scale = (a.rotary ? 1.0 : unit) * (diameter ? 0.5 : 1.0);
+  const bool incremental = parser::is_incremental_mode(mode) || (mode == ValueMode::Default && !absolute);
   if (incremental) {
     t.travel = value * scale;
   } else if (a.modulo) {

@@ -35,6 +35,7 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;
   last_dynamics_.group = state_.dynamic_group;
+  last_dynamics_.limits = state_.axis_limits;
 }
 
 void Interpreter::raise(const BlockContext& ctx, int number, const std::string& detail,
@@ -252,8 +253,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "DISC") {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
-    } else if (a.mode != ValueMode::Default && a.mode != ValueMode::Absolute && a.mode != ValueMode::Incremental &&
-               extra_axes_.index(n) < 0 && !is_axis_letter_name(n)) {
+    } else if (!parser::is_linear_value_mode(a.mode) && extra_axes_.index(n) < 0 && !is_axis_letter_name(n)) {
       // DC/ACP/ACN choose the way of a rotary axis: on X, Y, Z and non-axis words the control
       // refuses them (an extra axis the profile lacks is a warning below; a linear one: 168xx).
       const int number = a.mode == ValueMode::Direct ? 16800 : a.mode == ValueMode::AbsolutePositive ? 16810 : 16820;
@@ -426,6 +426,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.smoothing = state_.smoothing;
   e.dynamics.profile = state_.accel;
   e.dynamics.group = state_.dynamic_group;
+  e.dynamics.limits = state_.axis_limits;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
   e.corner.program_level = ctx.block.program_level;
   e.compensation.side = state_.compensation;
@@ -436,6 +437,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.compensation.intersection_corners = state_.intersection_corners;
   e.compensation.contour_approach = state_.contour_approach;
   e.compensation.collision_detection = state_.collision_detection;
+  e.compensation.contour_feed = state_.contour_feed;
   e.compensation.disc = state_.disc;
   e.compensation.plane_normal_axis = state_.plane_normal_axis();
   tilt_compensation_plane(ctx, e.compensation);
@@ -508,10 +510,11 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", ctx.compensation_column);
   // Dynamics changes are told to the planner once, where they happen.
   if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile ||
-      state_.dynamic_group != last_dynamics_.group) {
+      state_.dynamic_group != last_dynamics_.group || state_.axis_limits != last_dynamics_.limits) {
     last_dynamics_.transition = state_.transition;
     last_dynamics_.profile = state_.accel;
     last_dynamics_.group = state_.dynamic_group;
+    last_dynamics_.limits = state_.axis_limits;
     emit_control(ctx, ElementKind::DynamicsChange, "dynamics");
   }
 

@@ -98,6 +98,7 @@ class Interpreter {
   // DIAMON ... DIAMCYCOF, DIAMONA[ax] ... DIAMCHANA[ax], DIAMCHAN, SCC[ax] (interpreter_turning.cpp).
   bool apply_turning_command(BlockContext& ctx, const parser::CommandWord& command);
   void add_positioning(BlockContext& ctx, const parser::AxisWord& word);
+  void set_axis_limit(BlockContext& ctx, const parser::AxisWord& word);  // ACC/VELOLIM/JERKLIM[ax]=
   void add_spindle_positioning(BlockContext& ctx, const parser::AxisWord& word);
   std::vector<ExtraAxisMove> take_extra_axis_moves(BlockContext& ctx);
   // Moves extra axis i to a programmed value (alarms 168xx, 10720); returns the travel.

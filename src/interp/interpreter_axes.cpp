@@ -102,8 +102,37 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
       case AxisWordKind::PosA: add_positioning(ctx, w); break;
       case AxisWordKind::SPos:
       case AxisWordKind::SPosA: add_spindle_positioning(ctx, w); break;
+      case AxisWordKind::AccelPercent:
+      case AxisWordKind::VelocityPercent:
+      case AxisWordKind::JerkPercent: set_axis_limit(ctx, w); break;
     }
   }
+}
+
+void Interpreter::set_axis_limit(BlockContext& ctx, const AxisWord& w) {
+  // ACC 1..200 % (0: off, i.e. 100 %), VELOLIM 1..100 %, JERKLIM 1..200 %, modal per axis. A
+  // value outside the range is limited to it with warning 990013 (drycut does not know the
+  // control's alarm for it, so it does not refuse the block).
+  const char* name = w.kind == AxisWordKind::AccelPercent ? "ACC" : w.kind == AxisWordKind::VelocityPercent ? "VELOLIM" : "JERKLIM";
+  const std::string word = std::string(name) + "[" + w.axis + "]";
+  const int i = axis_index(w.axis);
+  if (i < 0) {
+    if (extra_axes_.index(w.axis) < 0 && !is_axis_letter_name(w.axis) && w.axis.rfind("SP", 0) != 0)
+      raise(ctx, 12550, word + ": not an axis of the channel", w.column);
+    warn_once(ctx, word + " (limits of an axis other than X, Y, Z are not modelled)", w.column);
+    return;
+  }
+  const double upper = w.kind == AxisWordKind::VelocityPercent ? 100.0 : 200.0;
+  double percent = w.kind == AxisWordKind::AccelPercent && w.value == 0.0 ? 100.0 : w.value;
+  if (!(percent >= 1.0 && percent <= upper)) {
+    percent = std::clamp(std::isnan(percent) ? 100.0 : percent, 1.0, upper);
+    warn_once(ctx, kValueLimited, word + "=" + parser::number_to_text(w.value) + " outside 1 .. " +
+                                      parser::number_to_text(upper) + " %, " + parser::number_to_text(percent) + " % taken",
+              w.column);
+  }
+  AxisLimitFactors& f = state_.axis_limits;
+  auto& target = w.kind == AxisWordKind::AccelPercent ? f.accel : w.kind == AxisWordKind::VelocityPercent ? f.velocity : f.jerk;
+  target[static_cast<size_t>(i)] = static_cast<float>(percent / 100.0);
 }
 
 void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {

@@ -38,7 +38,7 @@ const Frame& Interpreter::block_frame(const BlockContext& ctx) const {
 }
 
 bool Interpreter::is_incremental(const AddressWord& a) const {
-  return a.mode == ValueMode::Incremental || (a.mode == ValueMode::Default && !state_.absolute);
+  return parser::is_incremental_mode(a.mode) || (a.mode == ValueMode::Default && !state_.absolute);
 }
 
 PolarWords Interpreter::polar_words(const BlockContext& ctx) const {
@@ -95,7 +95,7 @@ void Interpreter::define_pole(const BlockContext& ctx) {
   const bool relative = *ctx.pole != PoleReference::WorkpieceZero;
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
-    const double value = a.value * unit * state_.diameter.position_factor(i, relative);
+    const double value = a.value * unit * state_.diameter.value_factor(i, a.mode, relative);
     if (i == axes.first) cartesian.first = value;
     if (i == axes.second) cartesian.second = value;
   }
@@ -144,7 +144,7 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
       const int i = axis_index(a.name);
       if (i < 0) continue;
       const bool incremental = is_incremental(a);
-      const double value = a.value * unit * state_.diameter.position_factor(i, incremental);
+      const double value = a.value * unit * state_.diameter.value_factor(i, a.mode, incremental);
       t.machine[i] = incremental ? position_[i] + value : value + frame.offset()[i];
       t.machine[i] += length[i] - (incremental ? length_applied_[i] : 0.0);
       t.length_after[i] = length[i];
@@ -160,7 +160,7 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
     const int i = axis_index(a.name);
     if (i < 0) continue;
     const bool incremental = is_incremental(a);
-    const double value = a.value * unit * state_.diameter.position_factor(i, incremental);
+    const double value = a.value * unit * state_.diameter.value_factor(i, a.mode, incremental);
     t.workpiece[i] = incremental ? t.workpiece[i] + value : value;
     t.length_after[i] = length[i];
   }

@@ -49,7 +49,7 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
       if (const AddressWord* a = ctx.block.find_address(names[i])) {
         any = true;
         const bool incremental = is_incremental(*a);
-        const double value = a->value * unit * state_.diameter.position_factor(i, incremental);
+        const double value = a->value * unit * state_.diameter.value_factor(i, a->mode, incremental);
         mid[i] = incremental ? start[i] + value : value + shift[i];
       }
     }

@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 61> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 64> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -60,6 +60,9 @@ constexpr std::array<std::pair<std::string_view, Setter>, 61> kCodes{{
     {"NORM", [](ModalState& s) { s.contour_approach = false; }},
     {"KONT", [](ModalState& s) { s.contour_approach = true; }},
     {"CDON", [](ModalState& s) { s.collision_detection = true; }},
+    {"CFC", [](ModalState& s) { s.contour_feed = ContourFeed::Contour; }},
+    {"CFTCP", [](ModalState& s) { s.contour_feed = ContourFeed::ToolCentre; }},
+    {"CFIN", [](ModalState& s) { s.contour_feed = ContourFeed::InsideOnly; }},
     {"CDOF", [](ModalState& s) { s.collision_detection = false; }},
     // G group 59: which element of the dynamic machine data applies (machine/dynamic_groups.hpp).
     {"DYNNORM", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Norm; }},
@@ -74,11 +77,10 @@ constexpr std::array<std::pair<std::string_view, Setter>, 61> kCodes{{
     {"COMPCAD", [](ModalState& s) { s.compressor = Compressor::Compcad; }},
 }};
 
-// Modal codes of the reset list that shape nothing drycut plans (feed reference of tool radius
-// compensation, feed-forward, compressor off, FIFO control, exact-stop windows ...): accepted so a
-// machine's real MD20150 list can be used as it is.
-constexpr std::array<std::string_view, 12> kNoPathEffect{
-    "CFC", "CFTCP", "CFIN", "FNORM", "FFWOF", "STARTFIFO", "G601", "G602", "G603",
+// Modal codes of the reset list that shape nothing drycut plans (feed-forward, FIFO control,
+// exact-stop windows ...): accepted so a machine's real MD20150 list can be used as it is.
+constexpr std::array<std::string_view, 9> kNoPathEffect{
+    "FNORM", "FFWOF", "STARTFIFO", "G601", "G602", "G603",
     "CUT2D", "SPATH", "G290"};
 
 }  // namespace

@@ -54,6 +54,7 @@ struct ModalState {
   SmoothingRequest smoothing;  // G641..G645 and ADIS/ADISPOS/CTOL/ATOL (corner_smoothing.hpp)
   AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
   machine::DynamicGroup dynamic_group = machine::DynamicGroup::Norm;  // DYNNORM ... DYNPREC
+  AxisLimitFactors axis_limits;                                       // ACC[ax] VELOLIM[ax] JERKLIM[ax]
   SplineCondition spline_begin = SplineCondition::Natural;
   SplineCondition spline_end = SplineCondition::Natural;
   int bspline_degree = 3;           // SD=
@@ -61,6 +62,7 @@ struct ModalState {
   bool intersection_corners = false;  // G451 / G450
   bool contour_approach = false;      // KONT / NORM
   bool collision_detection = false;   // CDON / CDOF
+  ContourFeed contour_feed = ContourFeed::Contour;  // CFC / CFTCP / CFIN
   double disc = 0.0;                  // DISC=
   double offn_mm = 0.0;            // OFFN=: contour offset added to the tool radius under G41/G42
   Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD

@@ -2,6 +2,7 @@
 // The canonical boundary: the one interface between interpreter and planner. The interpreter
 // turns blocks into a stream of these plain elements; the planner knows nothing else about
 // the program. Every element carries the source block it came from.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -51,19 +52,35 @@ enum class Compressor { Off, Compon, Compcurv, Compcad };
 
 enum class StopKind { None, ProgramStop /*M0*/, OptionalStop /*M1*/, ProgramEnd /*M2/M30*/, Preprocessing /*STOPRE*/ };
 
+// ACC[ax]=, VELOLIM[ax]=, JERKLIM[ax]=: factors (1 = 100 %) on the X/Y/Z axes' limits.
+struct AxisLimitFactors {
+  std::array<float, 3> accel{1.0f, 1.0f, 1.0f};
+  std::array<float, 3> velocity{1.0f, 1.0f, 1.0f};
+  std::array<float, 3> jerk{1.0f, 1.0f, 1.0f};
+  bool operator==(const AxisLimitFactors&) const = default;
+};
+
 struct DynamicsMode {
   TransitionMode transition = TransitionMode::ExactStop;
   AccelProfile profile = AccelProfile::Brisk;
   bool exact_stop_this_block = false;  // G9
   machine::DynamicGroup group = machine::DynamicGroup::Norm;  // G group 59: which MD array element
+  AxisLimitFactors limits;
 };
 
 // Tool radius compensation requested for the element (G40/G41/G42 and their companions). The
 // interpreter records it; the compensation stage (src/interp/cutter_compensation) applies it.
 enum class CompensationSide { None, Left /*G41*/, Right /*G42*/ };
 
+// What F refers to under tool radius compensation (G group 16; Fundamentals, "Feedrate
+// correction for circles and curves: CFC, CFTCP, CFIN"): the contour (CFC, reset default), the
+// tool centre (CFTCP), or the contour only on inside curves (CFIN: the centre slows down there,
+// it does not speed up outside).
+enum class ContourFeed : uint8_t { Contour /*CFC*/, ToolCentre /*CFTCP*/, InsideOnly /*CFIN*/ };
+
 struct CompensationRequest {
   CompensationSide side = CompensationSide::None;
+  ContourFeed contour_feed = ContourFeed::Contour;
   double radius_mm = 0.0;        // cutter radius of the active tool edge (D)
   bool intersection_corners = false;  // G451 (true) or G450 transition arcs (false)
   bool contour_approach = false;      // KONT (true) or NORM (false)

@@ -17,16 +17,20 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   const machine::DynamicGroupFactors& group = profile.dynamic_groups[static_cast<size_t>(element.dynamics.group)];
   const double accel_factor = element.rapid ? profile.g0_accel_factor : (d.soft ? profile.soft_accel_factor : 1.0);
   const double jerk_factor = element.rapid ? profile.g0_jerk_factor : 1.0;
+  // ACC[ax]/VELOLIM[ax]/JERKLIM[ax] scale each axis's limits (the corner rules included).
+  const interp::AxisLimitFactors& programmed = element.dynamics.limits;
   for (int i = 0; i < 3; ++i) {
-    const auto& axis = profile.axes[static_cast<size_t>(i)];
-    const double accel = axis.max_accel_mm_s2 * group.max_ax_accel;
-    const double jerk = axis.max_jerk_mm_s3 * group.max_ax_jerk;
-    d.axis_velocity[i] = axis.max_velocity_mm_s;
+    const size_t k = static_cast<size_t>(i);
+    const auto& axis = profile.axes[k];
+    const double accel = axis.max_accel_mm_s2 * group.max_ax_accel * programmed.accel[k];
+    const double jerk = axis.max_jerk_mm_s3 * group.max_ax_jerk * programmed.jerk[k];
+    d.axis_velocity[i] = axis.max_velocity_mm_s * programmed.velocity[k];
     d.raw_axis_accel[i] = accel;
     d.axis_accel[i] = accel * accel_factor;
     d.axis_jerk[i] = jerk * jerk_factor;
     d.transition_jerk[i] =
-        (axis.transition_jerk_mm_s3 > 0 ? axis.transition_jerk_mm_s3 * group.path_trans_jerk_lim : jerk) * jerk_factor;
+        (axis.transition_jerk_mm_s3 > 0 ? axis.transition_jerk_mm_s3 * group.path_trans_jerk_lim * programmed.jerk[k] : jerk) *
+        jerk_factor;
   }
   d.path_jerk = profile.path_jerk_mm_s3 * group.max_path_jerk * jerk_factor;
   d.centripetal_share = profile.curv_effect_on_path_accel;

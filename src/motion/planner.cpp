@@ -475,7 +475,8 @@ void Planner::commit_front() {
   front_velocity_ = v;
   front_kind_ = kind;
 
-  // Reported feeds are contour feeds (CFC): tool-centre velocity / feed_scale.
+  // Reported feeds are the ones the control displays: tool-centre velocity / feed_scale (the
+  // contour feed where CFC/CFIN scaled the centre; the centre feed under CFTCP).
   const double to_contour = e.feed_scale > 0 ? 1.0 / e.feed_scale : 1.0;
   v_max *= to_contour;
   v_min *= to_contour;

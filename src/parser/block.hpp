@@ -16,7 +16,23 @@ namespace drycut::parser {
 
 // How an address value was written: plain `X5`, `X=AC(5)` / `X=IC(5)`, or for a rotary axis
 // `C=DC(5)` (the shortest way), `C=ACP(5)` / `C=ACN(5)` (absolute, positive / negative way).
-enum class ValueMode : uint8_t { Default, Absolute, Incremental, Direct, AbsolutePositive, AbsoluteNegative };
+// How an address value was written: as it stands (G90/G91 decide), AC/IC, the rotary ways
+// DC/ACP/ACN, or the blockwise diameter/radius values DAC/DIC/RAC/RIC (Fundamentals, "Diameter/
+// radius programming for a specific axis"): a diameter or a radius whatever DIAMON/DIAMOF says.
+enum class ValueMode : uint8_t {
+  Default, Absolute, Incremental, Direct, AbsolutePositive, AbsoluteNegative,
+  DiameterAbsolute /*DAC*/, DiameterIncremental /*DIC*/, RadiusAbsolute /*RAC*/, RadiusIncremental /*RIC*/
+};
+// AC and IC, or a blockwise diameter/radius value: the modes a linear axis accepts.
+constexpr bool is_linear_value_mode(ValueMode m) {
+  return m != ValueMode::Direct && m != ValueMode::AbsolutePositive && m != ValueMode::AbsoluteNegative;
+}
+constexpr bool is_incremental_mode(ValueMode m) {
+  return m == ValueMode::Incremental || m == ValueMode::DiameterIncremental || m == ValueMode::RadiusIncremental;
+}
+constexpr bool is_absolute_mode(ValueMode m) {
+  return m == ValueMode::Absolute || m == ValueMode::DiameterAbsolute || m == ValueMode::RadiusAbsolute;
+}
 
 // An address with a numeric value: axis words X Y Z A B C, circle I J K I1 J1 K1, F S D H,
 // T<n>, and the extended addresses PW SD PL CR AR TURN AP RP ... Name is upper case.
@@ -61,8 +77,10 @@ struct SystemWrite {
 
 // Positioning-axis words (PGA Fundamentals "Traversing positioning axes"; Spindle SPOS):
 // POS[ax]= and POSA[ax]= move an axis on its own interpolator, SPOS=/SPOSA= position the
-// spindle, FA[ax]= sets a positioning axis's feed.
-enum class AxisWordKind : uint8_t { Pos, PosA, SPos, SPosA, AxialFeed };
+// spindle, FA[ax]= sets a positioning axis's feed. ACC[ax]=, VELOLIM[ax]=, JERKLIM[ax]= scale an
+// axis's acceleration, velocity and jerk limits in percent (Fundamentals, "Programmable
+// acceleration override (ACC)"; Function Manual B2, "Programmable dynamic limits").
+enum class AxisWordKind : uint8_t { Pos, PosA, SPos, SPosA, AxialFeed, AccelPercent, VelocityPercent, JerkPercent };
 struct AxisWord {
   AxisWordKind kind = AxisWordKind::Pos;
   std::string axis;  // upper case; the spindle number as text for SPOS[n] ("1" for SPOS=)

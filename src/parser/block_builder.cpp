@@ -89,6 +89,10 @@ class ProgramLoader::BlockBuilder {
         case Function::DirectMode: mode = ValueMode::Direct; break;
         case Function::AbsolutePositive: mode = ValueMode::AbsolutePositive; break;
         case Function::AbsoluteNegative: mode = ValueMode::AbsoluteNegative; break;
+        case Function::DiameterAbsolute: mode = ValueMode::DiameterAbsolute; break;
+        case Function::DiameterIncremental: mode = ValueMode::DiameterIncremental; break;
+        case Function::RadiusAbsolute: mode = ValueMode::RadiusAbsolute; break;
+        case Function::RadiusIncremental: mode = ValueMode::RadiusIncremental; break;
         default: break;
       }
       if (mode != ValueMode::Default) return {l_.eval(l_.parsed_.pool.args[top.a]), mode};
@@ -102,11 +106,12 @@ class ProgramLoader::BlockBuilder {
     has_words_ = true;
   }
 
-  // POS[A]=90, POSA[C]=ACP(0), FA[A]=3600, SPOS=0, SPOS[2]=IC(90), SPOSA=180.
+  // POS[A]=90, POSA[C]=ACP(0), FA[A]=3600, SPOS=0, SPOS[2]=IC(90), SPOSA=180, ACC[X]=50.
   bool axis_word(const Item& item) {
     static constexpr std::pair<std::string_view, AxisWordKind> kWords[] = {
         {"POS", AxisWordKind::Pos}, {"POSA", AxisWordKind::PosA}, {"FA", AxisWordKind::AxialFeed},
-        {"SPOS", AxisWordKind::SPos}, {"SPOSA", AxisWordKind::SPosA}};
+        {"SPOS", AxisWordKind::SPos}, {"SPOSA", AxisWordKind::SPosA}, {"ACC", AxisWordKind::AccelPercent},
+        {"VELOLIM", AxisWordKind::VelocityPercent}, {"JERKLIM", AxisWordKind::JerkPercent}};
     const auto* hit = std::find_if(std::begin(kWords), std::end(kWords), [&](const auto& w) { return w.first == item.name; });
     if (hit == std::end(kWords)) return false;
     const bool spindle = hit->second == AxisWordKind::SPos || hit->second == AxisWordKind::SPosA;

@@ -44,6 +44,7 @@ enum class Function : uint8_t {
   DirectMode,       // DC(x): rotary axis, shortest way
   AbsolutePositive, // ACP(x)
   AbsoluteNegative, // ACN(x)
+  DiameterAbsolute, DiameterIncremental, RadiusAbsolute, RadiusIncremental,  // DAC DIC RAC RIC(x)
   // Array value lists: only as the whole value of an array element assignment
   ArraySet,         // NAME[i]=SET(a, b, ...): consecutive elements from i
   ArrayRep,         // NAME[i]=REP(v): element i and all after it

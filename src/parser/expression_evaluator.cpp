@@ -161,7 +161,8 @@ class Evaluator {
       }
       case Function::CircleData: case Function::Assumed: return vars_.reference_function(n, pool_);
       case Function::AbsoluteMode: case Function::IncrementalMode: case Function::DirectMode:
-      case Function::AbsolutePositive: case Function::AbsoluteNegative:
+      case Function::AbsolutePositive: case Function::AbsoluteNegative: case Function::DiameterAbsolute:
+      case Function::DiameterIncremental: case Function::RadiusAbsolute: case Function::RadiusIncremental:
         throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an address");
       case Function::ArraySet: case Function::ArrayRep:
         throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an array element");
