@@ -174,8 +174,11 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       // A message on the operator screen: nothing to simulate.
     } else if (n == "RET") {
       // The return itself is the loader's (it leaves the subprogram after this block).
-    } else if (n == "TCOABS" || n == "TCOFR") {
+    } else if (n == "TCOABS" || n == "TCOFR" || n == "TCOFRX" || n == "TCOFRY" || n == "TCOFRZ") {
       orient_tool(ctx, n, c.column);
+    } else if (n == "KONTC" || n == "KONTT") {
+      state_.apply_code(n);
+      warn_once(ctx, n + " (approach/retract on a polynomial: planned as KONT)", c.column);
     } else if (apply_axis_command(ctx, c)) {
       // FGROUP, WAITP, WAITS (interpreter_axes.cpp)
     } else if (apply_turning_command(ctx, c)) {
@@ -228,7 +231,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "SF") {
       // Thread start angle: shifts where the thread starts on the circumference, not its time.
     } else if (n == "OVR") {
-      warn_once(ctx, "OVR (drycut plans at 100 % override)", a.column);
+      if (a.value != 100.0) warn_once(ctx, "OVR (drycut plans at 100 % override)", a.column);
     } else if (n == "T") {
       // Checked before the conversion: a double outside long long's range is undefined there.
       if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))

@@ -89,8 +89,12 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
       case AxisWordKind::AxialFeed: {
         const int i = extra_axes_.index(w.axis);
         if (i < 0) {
-          if (axis_index(w.axis) < 0) raise(ctx, 12550, "FA[" + w.axis + "]: not an axis of the channel", w.column);
-          warn_once(ctx, "FA[" + w.axis + "] (a geometry axis as positioning axis is not modelled)", w.column);
+          // A geometry axis, an axis letter the profile lacks (as POS[A]) or a spindle
+          // (FA[SPI(1)]: the speed of SPOS): valid, not modelled.
+          const bool spindle = w.axis.size() > 2 && w.axis.rfind("SP", 0) == 0;
+          if (axis_index(w.axis) < 0 && !is_axis_letter_name(w.axis) && !spindle)
+            raise(ctx, 12550, "FA[" + w.axis + "]: not an axis of the channel", w.column);
+          warn_once(ctx, "FA[" + w.axis + "] (the feed of a positioning axis or spindle drycut does not simulate)", w.column);
           continue;
         }
         if (!(w.value > 0)) raise(ctx, 14800, "FA[" + w.axis + "] must be > 0", w.column);

@@ -8,7 +8,7 @@ namespace {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 64> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 67> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -64,6 +64,9 @@ constexpr std::array<std::pair<std::string_view, Setter>, 64> kCodes{{
     {"CFTCP", [](ModalState& s) { s.contour_feed = ContourFeed::ToolCentre; }},
     {"CFIN", [](ModalState& s) { s.contour_feed = ContourFeed::InsideOnly; }},
     {"CDOF", [](ModalState& s) { s.collision_detection = false; }},
+    {"CDOF2", [](ModalState& s) { s.collision_detection = false; }},
+    {"KONTC", [](ModalState& s) { s.contour_approach = true; }},
+    {"KONTT", [](ModalState& s) { s.contour_approach = true; }},
     // G group 59: which element of the dynamic machine data applies (machine/dynamic_groups.hpp).
     {"DYNNORM", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Norm; }},
     {"DYNPOS", [](ModalState& s) { s.dynamic_group = machine::DynamicGroup::Pos; }},

@@ -64,6 +64,7 @@ std::map<std::string, std::string, std::less<>> machine_data_texts(const Machine
     channel_axis(p.axes[g].name);
   }
   for (const AxisData& a : p.extra_axes) channel_axis(a.name);
+  md["$MC_CHAN_NAME"] = "CHAN1";  // MD20000 CHAN_NAME: the default name of channel 1
   return md;
 }
 

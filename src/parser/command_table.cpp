@@ -29,9 +29,12 @@ constexpr std::array kCommands{
     CommandEntry{"COMPON", M},  CommandEntry{"COMPCURV", M}, CommandEntry{"COMPCAD", M},
     CommandEntry{"COMPOF", M},
     // Valid on the control, not modelled by drycut.
-    CommandEntry{"TRAORI", N},  CommandEntry{"TRAFOOF", N}, CommandEntry{"TRACYL", N},
-    CommandEntry{"TRANSMIT", N}, CommandEntry{"FFWON", N},
-    CommandEntry{"FFWOF", N},   CommandEntry{"ROT", M},     CommandEntry{"AROT", M},
+    CommandEntry{"TRAORI", N},  CommandEntry{"TRACYL", N},
+    // TRAFOOF ends a transformation; drycut models none (each is warned where it is selected),
+    // so switching off changes nothing. FFWON/FFWOF change the following error of the position
+    // loop, not the set-point path and its time that drycut plans (docs/controller-state.md).
+    CommandEntry{"TRAFOOF", E}, CommandEntry{"FFWON", E},   CommandEntry{"FFWOF", E},
+    CommandEntry{"TRANSMIT", N},   CommandEntry{"ROT", M},     CommandEntry{"AROT", M},
     CommandEntry{"SCALE", M},   CommandEntry{"ASCALE", M},  CommandEntry{"MIRROR", M},
     CommandEntry{"AMIRROR", M}, CommandEntry{"UPATH", N},   CommandEntry{"SPATH", E},
     CommandEntry{"CFC", M},     CommandEntry{"CFTCP", M},   CommandEntry{"CFIN", M},
@@ -53,7 +56,9 @@ constexpr std::array kCommands{
     CommandEntry{"PRESETON", N}, CommandEntry{"CPROT", N},  CommandEntry{"ORIRESET", N},
     CommandEntry{"FL", N},      CommandEntry{"ACC", M},     CommandEntry{"JERKLIM", M},
     CommandEntry{"VELOLIM", M}, CommandEntry{"FGREF", N},
-    CommandEntry{"OTOL", N},    CommandEntry{"TOFFON", N},
+    // OTOL: the orientation tolerance of smoothing/compressors, which only acts under an
+    // orientation transformation (TRAORI), itself not modelled and warned.
+    CommandEntry{"OTOL", E},    CommandEntry{"TOFFON", N},
     CommandEntry{"TOFFOF", N},  CommandEntry{"TOFFL", N},   CommandEntry{"TOFF", N},
     CommandEntry{"CUTMOD", N},  CommandEntry{"ORISON", N},  CommandEntry{"ORISOF", N},
     CommandEntry{"MEAS", N},    CommandEntry{"MEASW", N},   CommandEntry{"DIAM90", M},
@@ -67,7 +72,10 @@ constexpr std::array kCommands{
     CommandEntry{"ORIC", N}, CommandEntry{"ORID", N}, CommandEntry{"OSOF", N},
     CommandEntry{"OSC", N}, CommandEntry{"OSS", N}, CommandEntry{"OSSE", N}, CommandEntry{"PTP", N},
     CommandEntry{"CP", N}, CommandEntry{"PTPG0", N}, CommandEntry{"TRAANG", N},
-    CommandEntry{"TRACON", N}, CommandEntry{"FIFOCTRL", N}, CommandEntry{"DRIVEA", N},
+    CommandEntry{"TRACON", N}, CommandEntry{"FIFOCTRL", E}, CommandEntry{"DRIVEA", N},
+    CommandEntry{"ORICONCW", N}, CommandEntry{"ORICONCCW", N}, CommandEntry{"ORICONIO", N},
+    CommandEntry{"ORICONTO", N}, CommandEntry{"ORICURVE", N}, CommandEntry{"MEASA", N},
+    CommandEntry{"MEAWA", N},   CommandEntry{"OVRA", N},    CommandEntry{"OVRRAP", N},
     CommandEntry{"COMPSURF", N}, CommandEntry{"WAITMC", N}, CommandEntry{"WAITE", N},
     CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
     CommandEntry{"ORIPATH", N}, CommandEntry{"ORIPATHS", N}, CommandEntry{"STOPREOF", N},
@@ -160,6 +168,13 @@ constexpr std::array kCommands{
     CommandEntry{"CLEARM", E},  CommandEntry{"SETM", E},    CommandEntry{"WRTPR", E},
     CommandEntry{"RMI", E},     CommandEntry{"RMB", E},     CommandEntry{"RME", E},
     CommandEntry{"RMN", E},     CommandEntry{"WALIMON", E}, CommandEntry{"WALIMOF", E},
+    CommandEntry{"RMBBL", E},   CommandEntry{"RMIBL", E},   CommandEntry{"RMEBL", E},
+    CommandEntry{"RMNBL", E},
+    // Approach/retract variants and 3-D variants drycut plans as their plain counterpart:
+    // KONTC/KONTT (polynomial approach) as KONT with a warning, CDOF2 as CDOF (it differs only
+    // in 3-D circumferential milling, CUT3DC), TCOFRX/Y/Z as TCOFR.
+    CommandEntry{"KONTC", M},   CommandEntry{"KONTT", M},   CommandEntry{"CDOF2", M},
+    CommandEntry{"TCOFRX", M},  CommandEntry{"TCOFRY", M},  CommandEntry{"TCOFRZ", M},
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
@@ -226,6 +241,15 @@ Support command_support(std::string_view name) {
     return m;
   }();
   if (const auto it = kByName.find(name); it != kByName.end()) return it->second;
+  // GFRAME0 ... GFRAME100 (G group 64, grinding frames; Fundamentals, list of G groups).
+  if (name.size() > 6 && name.size() <= 9 && name.substr(0, 6) == "GFRAME") {
+    int n = 0;
+    for (const char c : name.substr(6)) {
+      if (c < '0' || c > '9') return Support::Unknown;
+      n = n * 10 + (c - '0');
+    }
+    if (n <= 100) return Support::NotModelled;
+  }
   // Standard cycles (CYCLE81, CYCLE800, POCKET3 ...) are not here: they are subprogram calls,
   // found in the user's folders first, then in drycut's own NC cycles (programs/cycles).
   return Support::Unknown;

@@ -516,22 +516,30 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
   return std::nullopt;
 }
 
-// PO[X]=(end, a2, ...) and PO[]=(b2, ...): the values are a list, as a procedure's arguments.
-void LineParser::parse_polynomial(ParsedLine& out, Item& item) {
-  ++pos_;  // PO
-  if (peek(1).kind == TokenKind::RBracket) {
+// PO[X]=(end, a2, ...) and PO[]=(b2, ...), MEASA[X]=(mode, trigger, ...) and MEAWA[X]=(..)
+// (Job Planning, "Extended measuring function"): the values are a list, as a procedure's
+// arguments. MEASA/MEAWA may also take a single value.
+void LineParser::parse_list_assignment(ParsedLine& out, Item& item) {
+  const bool polynomial = item.name == "PO";
+  ++pos_;  // the name
+  if (polynomial && peek(1).kind == TokenKind::RBracket) {
     pos_ += 2;  // "[]": the denominator
   } else {
     ExprIndex first = kNoExpr;
     item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
     item.index_first = first;
   }
-  if (peek().kind != TokenKind::Assign || peek(1).kind != TokenKind::LParen)
-    throw LineError(12080, peek().column, "PO[axis]=(values) expected");
-  pos_ += 2;
   item.kind = ItemKind::Assign;
+  if (!polynomial && peek().kind == TokenKind::Assign && peek(1).kind != TokenKind::LParen) {
+    ++pos_;
+    item.expr = expression(out);
+    return;
+  }
+  if (peek().kind != TokenKind::Assign || peek(1).kind != TokenKind::LParen)
+    throw LineError(12080, peek().column, std::string(item.name) + "[axis]=(values) expected");
+  pos_ += 2;
   std::array<ExprIndex, 8> values{};
-  parse_item_arguments(out, item, values, false, "too many polynomial values");
+  parse_item_arguments(out, item, values, false, "too many values in the list");
 }
 
 void LineParser::parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,
@@ -579,8 +587,8 @@ void LineParser::parse_words(ParsedLine& out) {
       if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
       ++pos_;
       item.expr = expression(out);
-    } else if (t.text == "PO" && next.kind == TokenKind::LBracket) {
-      parse_polynomial(out, item);
+    } else if ((t.text == "PO" || t.text == "MEASA" || t.text == "MEAWA") && next.kind == TokenKind::LBracket) {
+      parse_list_assignment(out, item);
     } else if (next.kind == TokenKind::LBracket) {
       // A[1,2]=..., $MA_COMPRESS_POS_TOL[X1]=..., G[8]=2, M[2]=3, S[1]=1000
       ++pos_;

@@ -23,7 +23,7 @@ class LineParser {
   bool parse_statement(ParsedLine& out);
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_words(ParsedLine& out);
-  void parse_polynomial(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..)
+  void parse_list_assignment(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..), MEASA[X]=(..)
   // The values up to ')' (after '(') into the pool's argument list as item.arg_first/arg_count.
   void parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,
                             const char* too_many);

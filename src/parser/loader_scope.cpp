@@ -61,6 +61,7 @@ bool ProgramLoader::is_axis_name(std::string_view name) const {
 Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Value> indices, uint32_t column) const {
   ProgramLoader& l = loader_;
   if (!name.empty() && name[0] == '$') {
+    if (auto v = l.program_variable(name, indices)) return *v;
     const auto r = l.system_variables_.read(name, indices);
     if (r.assumed)
       l.warn(990007, std::string(system_variable_class_name(classify_system_variable(name))) + " " +
@@ -83,6 +84,28 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
     if (l.is_axis_name(name)) return Value::of_axis(std::string(name));
   }
   throw LineError(12550, column, "name " + std::string(name) + " not defined");
+}
+
+std::optional<Value> ProgramLoader::program_variable(std::string_view name, std::span<const Value> indices) const {
+  if (frames_.empty()) return std::nullopt;
+  const Frame& f = *frames_.back();
+  // $P_SUBPAR[n]: was parameter n (from 1) given in the call of this program (Job Planning,
+  // "$P_SUBPAR"); a parameter beyond the arguments written is not.
+  if (name == "$P_SUBPAR" && indices.size() == 1 && indices[0].is_number()) {
+    const double n = indices[0].number;
+    const bool given = n >= 1 && n <= static_cast<double>(f.args.size()) && f.args[static_cast<size_t>(n) - 1].given;
+    return Value(given ? 1.0 : 0.0);
+  }
+  // $P_PROG / $P_PROGPATH: the running program's name and its path in the control's notation
+  // (/_N_MPF_DIR/_N_NAME_MPF; subprograms in _N_SPF_DIR), drycut's rendering of a file it
+  // read from a folder (inferred).
+  if (name == "$P_PROG" || name == "$P_PROGPATH") {
+    const bool main = frames_.size() == 1;
+    const char* type = main ? "MPF" : "SPF";
+    std::string path = std::string("/_N_") + type + "_DIR/_N_" + f.program + "_" + type;
+    return Value::of_text(name == "$P_PROG" ? f.program : std::move(path));
+  }
+  return std::nullopt;
 }
 
 double ProgramLoader::Scope::r_parameter(double index, uint32_t column) const {

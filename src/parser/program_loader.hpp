@@ -117,6 +117,8 @@ class ProgramLoader {
   // loader_scope.cpp
   Variable* find_variable(std::string_view name);
   bool is_axis_name(std::string_view name) const;
+  // $ variables the loader answers itself: $P_SUBPAR[n], $P_PROG, $P_PROGPATH.
+  std::optional<Value> program_variable(std::string_view name, std::span<const Value> indices) const;
   void assign_variable(Variable& v, uint32_t index_first, uint32_t index_count, ExprIndex value, uint32_t column);
   void assign_r_parameter(double index, double value, uint32_t column);
   void assign_system_variable(const Item& item, Block& out);

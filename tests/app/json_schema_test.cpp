@@ -26,7 +26,7 @@ constexpr const char* kMain =
     "G90 G17 G54 G64\n"
     "G0 X0 Y0 Z5\n"
     "G1 Z0 F1000\n"
-    "FFWON\n"
+    "CUT3DC\n"
     "SUBP\n"
     "G1 Y50\n"
     "M30\n";
@@ -73,7 +73,7 @@ TEST_F(JsonSchemas, RunDocumentHasAFileTableAndMatchesTheSchema) {
   EXPECT_TRUE(sub_row);
   EXPECT_NEAR(length, 250.0, 1e-5);
   EXPECT_NEAR(j["summary"]["path_length_mm"].get<double>(), 250.0, 1e-9);
-  ASSERT_EQ(j["warnings"].size(), 1u);  // FFWON is not modelled
+  ASSERT_EQ(j["warnings"].size(), 1u);  // CUT3DC (3-D circumferential milling) is not modelled
   EXPECT_EQ(j["warnings"][0]["number"], 990002);
 }
 

@@ -153,6 +153,19 @@ TEST_F(CycleRuns, OwnCust832ReplacesTheDefault) {
   EXPECT_DOUBLE_EQ(by_cycle, exact);
 }
 
+// A CAM post's header and finishing settings say nothing the user must act on: drycut's own
+// CYCLE832 and CUST_832 (OTOL=, FFWON) and the post's TRAFOOF, FIFOCTRL, OVR=100 and neutral
+// ACC/VELOLIM/JERKLIM run without a single warning (docs/controller-state.md, "Feeds" and
+// "Dynamics").
+TEST_F(CycleRuns, CamHeaderRunsWithoutWarnings) {
+  std::ofstream(dir_ / "HEADER.MPF") << "G40 G17 G710 G94 G90\nTRAFOOF\nFIFOCTRL\nOVR=100\n"
+                                        "ACC[X]=100 VELOLIM[X]=100 JERKLIM[X]=100\nCYCLE832(0.01,_FINISH,1)\n"
+                                        "G0 X0 Y0 Z50\nG1 X10 F2000\nCYCLE832()\nM30\n";
+  const CliRun r = drycut::testing::run_in_folder("run", dir_ / "HEADER.MPF", "-q");
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(r.out.find("WARNING"), std::string::npos) << r.out;
+}
+
 TEST_F(CycleRuns, NoStandardCyclesLeavesThemOutOfTheSearchPath) {
   std::ofstream(dir_ / "MAIN.MPF") << "G0 Z50\nF100\nCYCLE81(50,0,2,-10)\nM30\n";
   EXPECT_EQ(drycut::testing::run_in_folder("check", dir_ / "MAIN.MPF", "").exit_code, 0);

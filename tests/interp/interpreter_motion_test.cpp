@@ -159,11 +159,11 @@ TEST(Interpreter, ResetStateComesFromTheProfile) {
 }
 
 TEST(Interpreter, UnmodelledCommandWarnsByName) {
-  auto r = run_program("FFWON\nG1 X1 F100\nM30\n");
+  auto r = run_program("CUT3DC\nG1 X1 F100\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   bool named = false;
   for (const auto& a : r->diagnostics.items())
-    if (a.severity == Severity::Warning && a.text.find("FFWON") != std::string::npos) named = true;
+    if (a.severity == Severity::Warning && a.text.find("CUT3DC") != std::string::npos) named = true;
   EXPECT_TRUE(named);
 }
 
