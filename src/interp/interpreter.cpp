@@ -463,7 +463,7 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
   emit(std::move(e));
 }
 
-void Interpreter::emit(PathElement element) {
+void Interpreter::emit(PathElement&& element) {
   add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;
