@@ -102,7 +102,11 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         raise(ctx, 12070, "G" + std::to_string(group1) + " and G" + std::to_string(code), g.column);
       group1 = code;
       ctx.motion_code = true;
-      state_.apply_code("G" + std::to_string(code));
+      // What apply_code("G0".."G3") sets (kCodes, modal_state.cpp), without building the name
+      // and searching the code table by it on every motion block.
+      static constexpr MotionMode kGroup1[] = {MotionMode::Rapid, MotionMode::Linear, MotionMode::ArcCw,
+                                               MotionMode::ArcCcw};
+      state_.motion = kGroup1[code];
       continue;
     }
     switch (code) {
@@ -464,7 +468,7 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
   emit(std::move(e));
 }
 
-void Interpreter::emit(PathElement element) {
+void Interpreter::emit(PathElement&& element) {
   add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;

@@ -113,7 +113,7 @@ class Interpreter {
   PathElement build_polynomial(BlockContext& ctx, const Eigen::Vector3d& target);  // POLY (interpreter_polynomial.cpp)
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);
-  void emit(PathElement element);
+  void emit(PathElement&& element);  // by rvalue: one PathElement move less per element
   void add_nominal_time(const PathElement& element);
   // Marks a G1 element for the compressor stage (docs/compressor.md) and warns once about
   // compressor settings drycut does not model.

@@ -144,7 +144,11 @@ void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
       raise(ctx, 12160, "PL must be > 0 and within the control's value range", pl->column);
     knot_span = pl->value * (state_.inch ? kMmPerInch : 1.0);
   }
-  last_spline_block_ = ctx.ref();
+  // Field by field: the text reuses the buffer of the previous block's (a BlockRef built and
+  // moved in cost a malloc/free per spline block).
+  if (last_spline_block_.file != ctx.block.file) last_spline_block_.file = ctx.block.file;
+  last_spline_block_.line = ctx.block.line;
+  last_spline_block_.text.assign(ctx.block.text);
   try {
     spline_.add(target, weight, knot_span, std::move(e));
     spline_.drain(sink_);

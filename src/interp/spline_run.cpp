@@ -19,7 +19,7 @@ void SplineRun::begin(MotionMode mode, const geometry::Vec3& start,
   start_ = start;
 }
 
-void SplineRun::add(const geometry::Vec3& point, double weight, double knot_span, PathElement element) {
+void SplineRun::add(const geometry::Vec3& point, double weight, double knot_span, PathElement&& element) {
   if (next_index_ == 0) {
     // The start point is the current position, a control point nobody gave a weight: it takes
     // the first block's PW, so that equal weights on every block give the plain B-spline (the

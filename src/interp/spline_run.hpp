@@ -22,7 +22,7 @@ class SplineRun {
   void begin(MotionMode mode, const geometry::Vec3& start, const geometry::SplineEnd& begin_condition,
              int degree, int cubic_window);
   // Adds one programmed point; `element` carries everything but the geometry of its span(s).
-  void add(const geometry::Vec3& point, double weight, double knot_span, PathElement element);
+  void add(const geometry::Vec3& point, double weight, double knot_span, PathElement&& element);
   // Ends the run with the given end condition.
   void finish(const geometry::SplineEnd& end_condition);
   // Hands every span that is final to the sink; returns the end tangent of the last one emitted.

@@ -115,6 +115,28 @@ CurvePoint PolynomialSpan::by_arc_length(const ParametricDerivatives& d) {
   return out;
 }
 
-CurvePoint PolynomialSpan::at(double s) const { return by_arc_length(derivatives(parameter_at(s))); }
+// parameter_at(s) is u = 0 for s <= 0 (and for a table of one entry: a span of no length) and
+// the table's last parameter, u_end itself, for s >= length: those are the cached end points.
+CurvePoint PolynomialSpan::at(double s) const {
+  if (table_.size() < 2 || s <= 0.0) return start_point();
+  if (s >= length()) return end_point();
+  return by_arc_length(derivatives(parameter_at(s)));
+}
+
+const CurvePoint& PolynomialSpan::start_point() const {
+  if (!start_known_) {
+    start_point_ = by_arc_length(derivatives(0.0));
+    start_known_ = true;
+  }
+  return start_point_;
+}
+
+const CurvePoint& PolynomialSpan::end_point() const {
+  if (!end_known_) {
+    end_point_ = by_arc_length(derivatives(u_end_));
+    end_known_ = true;
+  }
+  return end_point_;
+}
 
 }  // namespace drycut::geometry

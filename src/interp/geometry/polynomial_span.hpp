@@ -41,8 +41,8 @@ class PolynomialSpan final : public Curve {
 
   double length() const override { return table_.length(); }
   CurvePoint at(double s) const override;
-  Vec3 start() const override { return derivatives(0.0).p; }
-  Vec3 end() const override { return derivatives(u_end_).p; }
+  Vec3 start() const override { return start_point().position; }
+  Vec3 end() const override { return end_point().position; }
   // Sampled on first use: only cutter compensation asks, and the planner's hot path builds
   // one span per spline block.
   double max_curvature() const override;
@@ -62,11 +62,19 @@ class PolynomialSpan final : public Curve {
   template <typename F>
   auto with_speed(F&& f) const;
 
+  // The end points (u = 0 and u_end) evaluated on first use: the interpreter (end tangent),
+  // the planner's validation (start, end), its end stations and its commit (end) ask for them,
+  // 4-6 evaluations per span otherwise. The same formulas, so the same values.
+  const CurvePoint& start_point() const;
+  const CurvePoint& end_point() const;
+
   Eigen::Matrix4d c_;
   double u_end_;
   bool polynomial_;  // w == 1 (Akima, cubic): P = H.xyz, no quotient rule
   ArcLengthTable table_;
   mutable double max_curvature_ = -1.0;  // < 0: not sampled yet
+  mutable bool start_known_ = false, end_known_ = false;
+  mutable CurvePoint start_point_, end_point_;
 };
 
 }  // namespace drycut::geometry
