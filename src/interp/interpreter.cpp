@@ -83,6 +83,8 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
   saved_states_.pop_back();
   restored.feed = state_.feed;
   restored.feed_unit_mm = state_.feed_unit_mm;
+  restored.tooth_feed = state_.tooth_feed;  // like F
+  restored.tooth_feed_unit_mm = state_.tooth_feed_unit_mm;
   restored.spindle_rpm = state_.spindle_rpm;
   restored.spindle = state_.spindle;
   restored.thread_lead_mm = state_.thread_lead_mm;
@@ -219,6 +221,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       state_.feed = a.value;
       state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
+      apply_f_after_tooth_feed(ctx, a);
+    } else if (n == "FZ") {
+      apply_tooth_feed(ctx, a);
     } else if (n == "S" || numbered_spindle(n) > 0) {
       apply_spindle_speed(ctx, a);
     } else if (n == "LIMS") {
@@ -410,12 +415,6 @@ double Interpreter::spindle_speed(const BlockContext& ctx) {
   double rpm = diameter > 1e-9 ? speed_mm_min / (std::numbers::pi * diameter) : profile_.max_spindle_speed_rpm;
   if (state_.spindle_speed_limit > 0) rpm = std::min(rpm, state_.spindle_speed_limit);
   return std::min(limit_to_g25_g26(ctx, rpm, true), profile_.max_spindle_speed_rpm);
-}
-
-double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Vector3d& chord) {
-  const FeedResult feed = path_feed(state_, spindle_speed(ctx), length_mm, chord, ctx.lead_change_mm);
-  if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
-  return feed.mm_s;
 }
 
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {

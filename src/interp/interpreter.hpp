@@ -121,6 +121,11 @@ class Interpreter {
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
   // The path feed of a block of this length and chord (src/interp/feed_rate); alarms raised.
   double feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord);
+  // Tooth feed G95 FZ (tooth_feed.cpp): the FZ word, an F in a block after FZ, and the feed
+  // state the block runs with (state_, or `scratch` with F = FZ · teeth under G95).
+  void apply_tooth_feed(BlockContext& ctx, const parser::AddressWord& a);
+  void apply_f_after_tooth_feed(BlockContext& ctx, const parser::AddressWord& f);
+  const ModalState& feed_state(const BlockContext& ctx, ModalState& scratch);
   // The spindle speed the feed and G4 S use (G96 resolved; 0 when it stands).
   double spindle_speed(const BlockContext& ctx);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)

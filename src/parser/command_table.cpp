@@ -163,11 +163,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 52> kAddresses{
+constexpr std::array<std::string_view, 53> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{
