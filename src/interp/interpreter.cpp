@@ -179,6 +179,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       orient_tool(ctx, n, c.column);
     } else if (apply_axis_command(ctx, c)) {
       // FGROUP, WAITP, WAITS (interpreter_axes.cpp)
+    } else if (apply_transformation_command(c)) {
+      // TRANSMIT, TRACYL, TRAANG, TRAORI, TRAFOOF (transformation_limits.cpp)
     } else if (apply_turning_command(ctx, c)) {
       // diameter programming, SCC (interpreter_turning.cpp)
     } else if (!state_.apply_code(n)) {
@@ -489,7 +491,8 @@ void Interpreter::emit_control(BlockContext& ctx, ElementKind kind, std::string 
   emit(std::move(e));
 }
 
-void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) const {
+void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) {
+  if (!limits_checked(ctx)) return;
   for (int i = 0; i < 3; ++i) {
     const auto& axis = profile_.axes[static_cast<size_t>(i)];
     if (target[i] < axis.min_mm - 1e-9 || target[i] > axis.max_mm + 1e-9) {

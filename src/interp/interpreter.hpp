@@ -150,7 +150,12 @@ class Interpreter {
   bool frame_mirrors_plane(const Frame& frame) const;
   void tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const;
   Target target_position(BlockContext& ctx);
-  void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
+  void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
+  // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
+  // word is none of them.
+  bool apply_transformation_command(const parser::CommandWord& c);
+  // False (warned once) while a transformation drycut does not model is active.
+  bool limits_checked(const BlockContext& ctx);
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
                           uint32_t column = 0) const;
   // A warning once per text: 990002 (not modelled), or the given catalogue number.
@@ -192,6 +197,7 @@ class Interpreter {
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
+  std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
   // G25 S / G26 S (SD43210 SPIND_MIN_VELO_G25, SD43220 SPIND_MAX_VELO_G26), 0: no limit.

@@ -218,6 +218,11 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 std::span<const CommandInfo> all_commands() { return kCommands; }
 std::span<const std::string_view> all_addresses() { return kAddresses; }
 
+bool is_transformation_command(std::string_view upper_name) {
+  return upper_name == "TRANSMIT" || upper_name == "TRACYL" || upper_name == "TRAANG" || upper_name == "TRAORI" ||
+         upper_name == "TRAFOOF";
+}
+
 Support command_support(std::string_view name) {
   // Every name word of every block asks: one hash lookup, not a walk through the table.
   static const std::unordered_map<std::string_view, Support> kByName = [] {
