@@ -84,6 +84,8 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
   saved_states_.pop_back();
   restored.feed = state_.feed;
   restored.feed_unit_mm = state_.feed_unit_mm;
+  restored.tooth_feed = state_.tooth_feed;  // like F
+  restored.tooth_feed_unit_mm = state_.tooth_feed_unit_mm;
   restored.spindle_rpm = state_.spindle_rpm;
   restored.spindle = state_.spindle;
   restored.thread_lead_mm = state_.thread_lead_mm;
@@ -185,6 +187,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       warn_once(ctx, n + " (approach/retract on a polynomial: planned as KONT)", c.column);
     } else if (apply_axis_command(ctx, c)) {
       // FGROUP, WAITP, WAITS (interpreter_axes.cpp)
+    } else if (apply_transformation_command(c)) {
+      // TRANSMIT, TRACYL, TRAANG, TRAORI, TRAFOOF (transformation_limits.cpp)
     } else if (apply_turning_command(ctx, c)) {
       // diameter programming, SCC (interpreter_turning.cpp)
     } else if (!state_.apply_code(n)) {
@@ -227,6 +231,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       state_.feed = a.value;
       state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
+      apply_f_after_tooth_feed(ctx, a);
+    } else if (n == "FZ") {
+      apply_tooth_feed(ctx, a);
     } else if (n == "S" || numbered_spindle(n) > 0) {
       apply_spindle_speed(ctx, a);
     } else if (n == "LIMS") {
@@ -419,12 +426,6 @@ double Interpreter::spindle_speed(const BlockContext& ctx) {
   return std::min(limit_to_g25_g26(ctx, rpm, true), profile_.max_spindle_speed_rpm);
 }
 
-double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Vector3d& chord) {
-  const FeedResult feed = path_feed(state_, spindle_speed(ctx), length_mm, chord, ctx.lead_change_mm);
-  if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
-  return feed.mm_s;
-}
-
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {
   PathElement e;
   e.kind = kind;
@@ -499,7 +500,8 @@ void Interpreter::emit_control(BlockContext& ctx, ElementKind kind, std::string 
   emit(std::move(e));
 }
 
-void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) const {
+void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) {
+  if (!limits_checked(ctx)) return;
   for (int i = 0; i < 3; ++i) {
     const auto& axis = profile_.axes[static_cast<size_t>(i)];
     if (target[i] < axis.min_mm - 1e-9 || target[i] > axis.max_mm + 1e-9) {

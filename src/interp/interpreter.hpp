@@ -122,6 +122,11 @@ class Interpreter {
   PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
   // The path feed of a block of this length and chord (src/interp/feed_rate); alarms raised.
   double feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord);
+  // Tooth feed G95 FZ (tooth_feed.cpp): the FZ word, an F in a block after FZ, and the feed
+  // state the block runs with (state_, or `scratch` with F = FZ · teeth under G95).
+  void apply_tooth_feed(BlockContext& ctx, const parser::AddressWord& a);
+  void apply_f_after_tooth_feed(BlockContext& ctx, const parser::AddressWord& f);
+  const ModalState& feed_state(const BlockContext& ctx, ModalState& scratch);
   // The spindle speed the feed and G4 S use (G96 resolved; 0 when it stands).
   double spindle_speed(const BlockContext& ctx);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
@@ -146,7 +151,12 @@ class Interpreter {
   bool frame_mirrors_plane(const Frame& frame) const;
   void tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const;
   Target target_position(BlockContext& ctx);
-  void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target) const;
+  void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
+  // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
+  // word is none of them.
+  bool apply_transformation_command(const parser::CommandWord& c);
+  // False (warned once) while a transformation drycut does not model is active.
+  bool limits_checked(const BlockContext& ctx);
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
                           uint32_t column = 0) const;
   // A warning once per text: 990002 (not modelled), or the given catalogue number.
@@ -188,6 +198,7 @@ class Interpreter {
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
+  std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
   // G25 S / G26 S (SD43210 SPIND_MIN_VELO_G25, SD43220 SPIND_MAX_VELO_G26), 0: no limit.

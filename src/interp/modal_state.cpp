@@ -6,6 +6,13 @@
 namespace drycut::interp {
 namespace {
 
+// G93/G94/G95: a change of the feed type deletes the tooth feed FZ; selecting the active type
+// again keeps it (Fundamentals, "Tooth feedrate (G95 FZ)").
+void set_feed_mode(ModalState& s, FeedMode mode) {
+  if (s.feed_mode != mode) s.tooth_feed = 0.0;
+  s.feed_mode = mode;
+}
+
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
 constexpr std::array<std::pair<std::string_view, Setter>, 67> kCodes{{
@@ -28,11 +35,11 @@ constexpr std::array<std::pair<std::string_view, Setter>, 67> kCodes{{
     {"G71", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = false; }},
     {"G700", [](ModalState& s) { s.inch = true; s.feed_in_geometry_unit = true; }},
     {"G710", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = true; }},
-    {"G93", [](ModalState& s) { s.feed_mode = FeedMode::InverseTime; }},
-    {"G94", [](ModalState& s) { s.feed_mode = FeedMode::PerMinute; }},
-    {"G95", [](ModalState& s) { s.feed_mode = FeedMode::PerRevolution; }},
+    {"G93", [](ModalState& s) { set_feed_mode(s, FeedMode::InverseTime); }},
+    {"G94", [](ModalState& s) { set_feed_mode(s, FeedMode::PerMinute); }},
+    {"G95", [](ModalState& s) { set_feed_mode(s, FeedMode::PerRevolution); }},
     // G96 switches feed per revolution on with constant cutting speed; G97 keeps G95.
-    {"G96", [](ModalState& s) { s.constant_cutting_speed = true; s.feed_mode = FeedMode::PerRevolution; }},
+    {"G96", [](ModalState& s) { s.constant_cutting_speed = true; set_feed_mode(s, FeedMode::PerRevolution); }},
     {"G97", [](ModalState& s) { s.constant_cutting_speed = false; }},
     {"G33", [](ModalState& s) { s.motion = MotionMode::Thread; }},
     {"G34", [](ModalState& s) { s.motion = MotionMode::ThreadIncreasing; }},

@@ -48,6 +48,10 @@ struct ModalState {
   PolarState polar;                 // pole, AP, RP
   double feed = 0.0;                // as programmed (per minute, per revolution, or 1/min under G93)
   double feed_unit_mm = 1.0;        // mm per length unit of F when it was programmed (25.4: inch)
+  // FZ tooth feed as programmed (0: none, F governs); under G95 the feed per revolution is
+  // FZ times the active edge's number of teeth. Deleted by a change of G93/G94/G95.
+  double tooth_feed = 0.0;
+  double tooth_feed_unit_mm = 1.0;  // as feed_unit_mm, for FZ
   double spindle_rpm = 0.0;
   SpindleState spindle = SpindleState::Stopped;
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...

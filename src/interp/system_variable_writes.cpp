@@ -1,5 +1,5 @@
 // `$` system variables the program writes and the interpreter models: tool data $TC_DP3
-// (length) and $TC_DP6 (radius) of tool t, edge d; settable frames $P_UIFR[n] (whole, from a
+// (length), $TC_DP6 (radius) and $TC_DPNT (number of teeth) of tool t, edge d; settable frames $P_UIFR[n] (whole, from a
 // frame function, or by component $P_UIFR[n, X, TR]; effective when next selected) and the
 // programmable frame $P_PFRAME (at once) — frame_components.hpp. Other frame writes ($P_BFRAME,
 // component writes of $P_PFRAME, chained frame expressions) warn. Other writes were kept by the
@@ -21,8 +21,11 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
       const int parameter = std::atoi(w.name.c_str() + 6);
       // Indices no int holds are outside the table like any other (and their cast undefined).
       auto index = [](double v) { return v > -2147483648.0 && v < 2147483648.0 ? static_cast<int>(v) : -1; };
-      if (!tools_.set_edge_parameter(parameter, index(w.indices[0].number), index(w.indices[1].number),
-                                     w.value.number))
+      const int t = index(w.indices[0].number), d = index(w.indices[1].number);
+      // $TC_DPNT: number of teeth, the factor of the tooth feed G95 FZ.
+      const bool written = w.name == "$TC_DPNT" ? tools_.set_edge_teeth(t, d, w.value.number)
+                                                : tools_.set_edge_parameter(parameter, t, d, w.value.number);
+      if (!written)
         diagnostics_.warn(kNotModelled, w.name + ": index outside the tool table's range", where, block.text);
       continue;
     }

@@ -1,5 +1,6 @@
 #include "interp/tool_state.hpp"
 
+#include <cmath>
 #include <cstdlib>
 
 namespace drycut::interp {
@@ -110,32 +111,46 @@ void ToolState::activate_edge(int d, std::vector<ToolNotice>& notices) {
   }
   for (const auto& e : tool->edges) {
     if (e.d == d) {
-      offsets_ = {e.length_mm, e.radius_mm};
+      offsets_ = {e.length_mm, e.radius_mm, e.teeth};
       return;
     }
   }
   missing(kIllegalDNumber, "tool " + *active_ + " has no edge D" + std::to_string(d), notices);
 }
 
-bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
-  if (parameter < 1 || parameter > 25 || t < 1 || t > kMaxNumber || d < 1 || d > kMaxNumber) return false;
+machine::ToolEdge* ToolState::edge_for_write(int t, int d) {
+  if (t < 1 || t > kMaxNumber || d < 1 || d > kMaxNumber) return nullptr;
   machine::Tool* tool = find_by_number(t);
   if (!tool) {
     table_.push_back({std::to_string(t), t, {}});
     tool = &table_.back();
   }
-  machine::ToolEdge* edge = nullptr;
   for (auto& e : tool->edges)
-    if (e.d == d) edge = &e;
-  if (!edge) {
-    tool->edges.push_back({d, 0.0, 0.0});
-    edge = &tool->edges.back();
-  }
+    if (e.d == d) return &e;
+  tool->edges.push_back({d, 0.0, 0.0});
+  return &tool->edges.back();
+}
+
+bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
+  if (parameter < 1 || parameter > 25) return false;
+  machine::ToolEdge* edge = edge_for_write(t, d);
+  if (!edge) return false;
   if (parameter == 3) edge->length_mm = value;
   if (parameter == 6) edge->radius_mm = value;
   // The active edge takes the new value at once (the control re-reads it with the next D or
   // motion; drycut applies it with the next motion as for any length change).
-  if (has_tool() && edge_ == d && find(*active_) == tool) offsets_ = {edge->length_mm, edge->radius_mm};
+  if (has_tool() && edge_ == d && find(*active_) && find(*active_)->number == t) {
+    offsets_.length_mm = edge->length_mm;
+    offsets_.radius_mm = edge->radius_mm;
+  }
+  return true;
+}
+
+bool ToolState::set_edge_teeth(int t, int d, double teeth) {
+  if (!(teeth >= 0 && teeth <= kMaxNumber) || teeth != std::floor(teeth)) return false;
+  machine::ToolEdge* edge = edge_for_write(t, d);
+  if (!edge) return false;
+  edge->teeth = static_cast<int>(teeth);
   return true;
 }
 

@@ -38,6 +38,7 @@ struct ToolNotice {
 struct ToolOffsets {
   double length_mm = 0.0;  // $TC_DP3, geometry length 1
   double radius_mm = 0.0;  // $TC_DP6, geometry radius
+  int teeth = 0;           // $TC_DPNT, number of teeth (G95 FZ); 0 = not known
 };
 
 class ToolState {
@@ -56,6 +57,10 @@ class ToolState {
   // other parameters are accepted and do not change the path. A missing tool or edge is
   // created. Returns false for a parameter or index out of the control's range.
   bool set_edge_parameter(int parameter, int t, int d, double value);
+  // $TC_DPNT[t, d] = teeth. As on the control (Fundamentals, "Tooth feedrate (G95 FZ)") the
+  // active edge takes the new number with the next D or tool change, not at once. Returns false
+  // for an index or value out of range.
+  bool set_edge_teeth(int t, int d, double teeth);
 
   bool change_on_m_code() const { return change_mode_ == 1; }
   int change_m_code() const { return change_m_code_; }
@@ -73,6 +78,8 @@ class ToolState {
   // The offsets of edge d of the active tool; notices when tool or edge are not in the table.
   void activate_edge(int d, std::vector<ToolNotice>& notices);
   void missing(int number, const std::string& detail, std::vector<ToolNotice>& notices) const;
+  // Edge d of tool t, created (with a new tool) when missing; nullptr for indices out of range.
+  machine::ToolEdge* edge_for_write(int t, int d);
 
   std::vector<machine::Tool> table_;
   int change_mode_ = 1;

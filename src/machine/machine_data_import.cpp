@@ -517,10 +517,12 @@ class Importer {
 
   // Tool offsets as the tool data backup writes them: $TC_DP3[t,d] length 1 and $TC_DP6[t,d]
   // radius of edge d of tool t, each plus its wear value ($TC_DP12, $TC_DP15), which the control
-  // adds; $TC_TP2[t] the tool's name (else its number). Edges 1..12 as the profile takes them.
+  // adds; $TC_DPNT[t,d] the number of teeth (tooth feed G95 FZ); $TC_TP2[t] the tool's name (else
+  // its number). Edges 1..12 as the profile takes them.
   void read_tools() {
     struct Edge {
       double length = 0, radius = 0;
+      int teeth = 0;
       const MachineDatum *length_from = nullptr, *radius_from = nullptr;
     };
     std::map<int, std::map<int, Edge>> tools;
@@ -529,10 +531,14 @@ class Importer {
       const double* v = std::get_if<double>(&d.value);
       if (d.area != "TC" || !v || d.index.size() != 2 || !all_digits(d.index[0]) || !all_digits(d.index[1])) continue;
       const bool length = d.name == "DP3" || d.name == "DP12", radius = d.name == "DP6" || d.name == "DP15";
+      const bool teeth = d.name == "DPNT" && *v >= 0 && *v <= 32000 && *v == std::floor(*v);
       const int t = std::stoi(d.index[0]), e = std::stoi(d.index[1]);
-      if ((!length && !radius) || t > 32000 || e < 1 || e > 12) continue;
+      if ((!length && !radius && !teeth) || t > 32000 || e < 1 || e > 12) continue;
       Edge& edge = tools[t][e];
-      (length ? edge.length : edge.radius) += *v;
+      if (teeth)
+        edge.teeth = static_cast<int>(*v);
+      else
+        (length ? edge.length : edge.radius) += *v;
       if (d.name == "DP3") edge.length_from = &d;
       if (d.name == "DP6") edge.radius_from = &d;
       slot.used = true;
@@ -561,7 +567,7 @@ class Importer {
           out_.sources[e + "d"] = {written_name(*from), from->location()};
           out_.sources[tool_key + "number"] = {written_name(*from), from->location()};
         }
-        tool.edges.push_back({d, edge.radius, edge.length});
+        tool.edges.push_back({d, edge.radius, edge.length, edge.teeth});
       }
       out_.profile.tools.push_back(tool);
     }

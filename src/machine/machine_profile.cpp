@@ -156,6 +156,10 @@ ToolEdge read_edge(const json& node, const std::string& path) {
   e.d = static_cast<int>(*d);
   if (auto v = r.quantity("radius", Dimension::Length)) e.radius_mm = require_non_negative(*v, r.key_path("radius"));
   if (auto v = r.quantity("length", Dimension::Length)) e.length_mm = *v;
+  if (auto n = r.integer("teeth")) {
+    if (*n < 0 || *n > 32000) r.fail("teeth", "must be in [0, 32000]");
+    e.teeth = static_cast<int>(*n);
+  }
   r.reject_unknown_keys();
   return e;
 }
@@ -318,7 +322,11 @@ std::string profile_to_json(const MachineProfile& p) {
   json tools = json::array();
   for (const auto& t : p.tools) {
     json edges = json::array();
-    for (const auto& e : t.edges) edges.push_back({{"d", e.d}, {"radius_mm", e.radius_mm}, {"length_mm", e.length_mm}});
+    for (const auto& e : t.edges) {
+      json edge{{"d", e.d}, {"radius_mm", e.radius_mm}, {"length_mm", e.length_mm}};
+      if (e.teeth > 0) edge["teeth"] = e.teeth;
+      edges.push_back(edge);
+    }
     tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});
   }
   root["compressor"] = compressor_to_json(p);

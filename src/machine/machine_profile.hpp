@@ -66,6 +66,7 @@ struct ToolEdge {
   int d = 1;               // D number
   double radius_mm = 0;    // cutter radius (tool radius compensation)
   double length_mm = 0;    // geometry length 1: tool length compensation along the plane normal
+  int teeth = 0;           // $TC_DPNT number of teeth (tooth feed G95 FZ); 0 = not known
 };
 
 struct Tool {

@@ -7,7 +7,8 @@
 // - CSV: a header row naming the columns, then one row per cutting edge:
 //     number,name,d,length_mm,radius_mm
 //     1,FR_4,1,75.5,2
-//   `number` and `d` are required; `name` defaults to the number; lengths default to 0. Rows
+//   `number` and `d` are required; `name` defaults to the number; lengths default to 0; an
+//   optional `teeth` column is the number of teeth $TC_DPNT (tooth feed G95 FZ; 0 = unknown). Rows
 //   with the same number add edges to one tool. Blank lines and lines starting with # are skipped.
 #include <string>
 #include <vector>

@@ -251,6 +251,8 @@ class ProgramLoader::BlockBuilder {
     const Support s = command_support(item.name);
     if (s == Support::NotModelled) {
       l_.warn_not_modelled(item.name, item.column);
+      // The interpreter still needs to know a transformation is on (software limits).
+      if (is_transformation_command(item.name)) add_command(item);
       return;
     }
     if (s == Support::NoEffect) return;
@@ -303,6 +305,8 @@ class ProgramLoader::BlockBuilder {
     const Support s = command_support(item.name);
     if (s == Support::NotModelled) {
       l_.warn_not_modelled(item.name, item.column);
+      // The interpreter still needs to know a transformation is on (software limits).
+      if (is_transformation_command(item.name)) add_command(item);
       return;
     }
     if (s == Support::NoEffect) return;

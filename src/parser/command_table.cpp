@@ -178,11 +178,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 52> kAddresses{
+constexpr std::array<std::string_view, 53> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{
@@ -232,6 +232,11 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 
 std::span<const CommandInfo> all_commands() { return kCommands; }
 std::span<const std::string_view> all_addresses() { return kAddresses; }
+
+bool is_transformation_command(std::string_view upper_name) {
+  return upper_name == "TRANSMIT" || upper_name == "TRACYL" || upper_name == "TRAANG" || upper_name == "TRAORI" ||
+         upper_name == "TRAFOOF";
+}
 
 Support command_support(std::string_view name) {
   // Every name word of every block asks: one hash lookup, not a walk through the table.

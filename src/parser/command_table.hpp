@@ -21,6 +21,9 @@ std::span<const std::string_view> all_addresses();
 
 // Commands and procedures by upper-case name (ASPLINE, CYCLE832, TRAORI, CYCLE81 ...).
 Support command_support(std::string_view upper_name);
+// TRANSMIT, TRACYL, TRAANG, TRAORI, TRAFOOF: not modelled (warned), but handed to the
+// interpreter all the same, which stops checking software limits while one is active.
+bool is_transformation_command(std::string_view upper_name);
 // G codes by number.
 Support g_code_support(int64_t code);
 // Addresses that carry a value: X Y Z A B C ... F S D H T, I1 J1 K1, PW SD PL CR AR AP RP TURN.

@@ -177,5 +177,30 @@ TEST(ToolState, TcDpWritesChangeTheEdge) {
   EXPECT_DOUBLE_EQ(profile.tools[0].edges[0].length_mm, 50.0);  // the profile is untouched
 }
 
+TEST(ToolState, TeethTakeEffectWithTheNextSelection) {
+  // $TC_DPNT[t,d] (Fundamentals, "Tooth feedrate (G95 FZ)"): the active edge keeps its number
+  // of teeth until the offset is selected again (D or change); a missing edge is created.
+  auto profile = test_profile();
+  CollectingSink sink;
+  Diagnostics diagnostics;
+  Interpreter interp(profile, sink, diagnostics);
+  std::vector<ToolNotice> notices;
+  interp.tools().program_tool("1", notices);
+  interp.tools().change_tool(1, notices);
+  EXPECT_EQ(interp.tools().offsets().teeth, 0);  // not in the table: unknown
+  EXPECT_TRUE(interp.tools().set_edge_teeth(1, 1, 4));
+  EXPECT_EQ(interp.tools().offsets().teeth, 0);  // not yet
+  interp.tools().select_edge(1, notices);
+  EXPECT_EQ(interp.tools().offsets().teeth, 4);
+  EXPECT_TRUE(interp.tools().set_edge_parameter(6, 1, 1, 3.0));  // a radius write keeps the teeth
+  EXPECT_EQ(interp.tools().offsets().teeth, 4);
+  EXPECT_TRUE(interp.tools().set_edge_teeth(1, 3, 2));  // creates D3
+  interp.tools().select_edge(3, notices);
+  EXPECT_TRUE(notices.empty());
+  EXPECT_EQ(interp.tools().offsets().teeth, 2);
+  EXPECT_FALSE(interp.tools().set_edge_teeth(1, 1, 2.5));  // whole numbers only
+  EXPECT_FALSE(interp.tools().set_edge_teeth(1, 1, -1));
+}
+
 }  // namespace
 }  // namespace drycut::interp::testing

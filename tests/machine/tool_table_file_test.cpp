@@ -23,6 +23,19 @@ TEST(ToolTableCsv, OneRowPerEdgeMergedByNumber) {
   EXPECT_DOUBLE_EQ(tools[1].edges[0].radius_mm, 0.0);
 }
 
+TEST(ToolTableCsv, TeethColumnIsOptional) {
+  // teeth: the number of teeth $TC_DPNT for G95 FZ; empty or absent = 0 (not known).
+  const auto tools = load_tool_table_csv("number,d,radius_mm,teeth\n1,1,5,4\n1,2,5,\n", "t.csv");
+  ASSERT_EQ(tools.size(), 1u);
+  ASSERT_EQ(tools[0].edges.size(), 2u);
+  EXPECT_EQ(tools[0].edges[0].teeth, 4);
+  EXPECT_EQ(tools[0].edges[1].teeth, 0);
+  EXPECT_THROW(load_tool_table_csv("number,d,teeth\n1,1,2.5\n", "t.csv"), ProfileError);
+  // JSON: the profile's edge key, written back by the profile writer when known.
+  const auto json_tools = load_tools_json(R"([{"name":"FR","number":1,"edges":[{"d":1,"teeth":3}]}])", "t.json");
+  EXPECT_EQ(json_tools[0].edges[0].teeth, 3);
+}
+
 TEST(ToolTableCsv, ColumnsMayComeInAnyOrder) {
   const auto tools = load_tool_table_csv("d,radius_mm,number\n2,3,5\n", "t.csv");
   ASSERT_EQ(tools.size(), 1u);

@@ -83,7 +83,7 @@ TEST_F(Loader, CommandsToolNamesAndArguments) {
 }
 
 TEST_F(Loader, NotModelledCommandWarnsAndIsDropped) {
-  const auto b = run("G1 X1 F100 TRAORI\nSETPIECE(1)\nM30\n");
+  const auto b = run("G1 X1 F100 FFWON\nSETPIECE(1)\nM30\n");
   ASSERT_EQ(b.size(), 2u);
   EXPECT_TRUE(b[0].commands.empty());
   ASSERT_EQ(diagnostics_.items().size(), 2u);
@@ -91,6 +91,17 @@ TEST_F(Loader, NotModelledCommandWarnsAndIsDropped) {
   EXPECT_EQ(diagnostics_.items()[0].where.line, 1u);
   EXPECT_EQ(diagnostics_.items()[0].where.column, 12u);
   EXPECT_EQ(diagnostics_.items()[1].where.line, 2u);
+}
+
+TEST_F(Loader, TransformationIsWarnedAndStillHandedOn) {
+  // TRANSMIT ... TRAFOOF are not modelled (990002), but the interpreter needs them: it does not
+  // check software limits on the programmed axes while a transformation is on (docs/axes.md).
+  const auto b = run("TRANSMIT\nG1 X1 F100\nTRAFOOF\nM30\n");
+  ASSERT_EQ(b.size(), 4u);
+  ASSERT_NE(b[0].find_command("TRANSMIT"), nullptr);
+  ASSERT_NE(b[2].find_command("TRAFOOF"), nullptr);
+  ASSERT_EQ(diagnostics_.items().size(), 2u);
+  EXPECT_EQ(diagnostics_.items()[0].number, 990002);
 }
 
 // Standard cycles are ordinary subprogram calls: the first folder of the search path that
