@@ -30,10 +30,11 @@ constexpr std::array kCommands{
     CommandEntry{"COMPOF", M},
     // Valid on the control, not modelled by drycut.
     CommandEntry{"TRAORI", N},  CommandEntry{"TRACYL", N},
-    // TRAFOOF ends a transformation; drycut models none (each is warned where it is selected),
-    // so switching off changes nothing. FFWON/FFWOF change the following error of the position
-    // loop, not the set-point path and its time that drycut plans (docs/controller-state.md).
-    CommandEntry{"TRAFOOF", E}, CommandEntry{"FFWON", E},   CommandEntry{"FFWOF", E},
+    // TRAFOOF ends a transformation: drycut models none (each is warned where it is selected),
+    // but checks the software limits of X/Y/Z again (docs/axes.md). FFWON/FFWOF change the
+    // following error of the position loop, not the set-point path and its time that drycut
+    // plans (docs/controller-state.md).
+    CommandEntry{"TRAFOOF", M}, CommandEntry{"FFWON", E},   CommandEntry{"FFWOF", E},
     CommandEntry{"TRANSMIT", N},   CommandEntry{"ROT", M},     CommandEntry{"AROT", M},
     CommandEntry{"SCALE", M},   CommandEntry{"ASCALE", M},  CommandEntry{"MIRROR", M},
     CommandEntry{"AMIRROR", M}, CommandEntry{"UPATH", N},   CommandEntry{"SPATH", E},

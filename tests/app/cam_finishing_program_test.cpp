@@ -122,7 +122,7 @@ TEST(CamFinishingProgram, ChecksAndRunsWithTheHandComputedBlocksAndLength) {
   EXPECT_FALSE(has_alarm(j["alarms"]));
   EXPECT_TRUE(j["alarms"].empty());
   EXPECT_TRUE(j["summary"]["complete"].get<bool>());
-  // Only "not modelled" warnings (FFWON, FFWOF): the tool is in tools.csv.
+  // No warning but "not modelled" ones (990002; FFWON/FFWOF no longer warn): the tool is in tools.csv.
   for (const auto& w : j["warnings"]) EXPECT_EQ(w["number"], 990002) << w.dump();
 
   // Path length: the generator sums every move in machine coordinates from the start (0,0,100)

@@ -30,7 +30,7 @@ class CheckCommand : public ::testing::Test {
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("drycut_check_cli_" + std::to_string(::getpid()));
     fs::create_directories(dir_ / "subs");
-    write("MAIN.MPF", "N10 G1 X1 F100\nN20 SOFT\nN30 ekvi_sub P2\nN40 FFWON\nN50 M30\n");
+    write("MAIN.MPF", "N10 G1 X1 F100\nN20 SOFT\nN30 ekvi_sub P2\nN40 CUT3DC\nN50 M30\n");
     write("subs/EKVI_SUB.SPF", "G1 Y1\nM17\n");
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -44,7 +44,7 @@ class CheckCommand : public ::testing::Test {
 TEST_F(CheckCommand, CleanProgramExitsZeroWithSummary) {
   const CliRun r = run(path("MAIN.MPF") + " --search-path " + path("subs"));
   EXPECT_EQ(r.exit_code, 0);
-  // Blocks: N10, N20, 2 x (G1 Y1, M17), N50 = 7 (FFWON alone is not modelled: dropped).
+  // Blocks: N10, N20, 2 x (G1 Y1, M17), N50 = 7 (CUT3DC alone is not modelled: dropped).
   EXPECT_NE(r.out.find("7 blocks executed"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("2 programs used"), std::string::npos) << r.out;
 }
@@ -53,7 +53,7 @@ TEST_F(CheckCommand, NotModelledCommandIsAWarningNotAnAlarm) {
   const CliRun r = run(path("MAIN.MPF") + " --search-path " + path("subs"), true);
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find(":4:5: WARNING 990002"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("FFWON"), std::string::npos);
+  EXPECT_NE(r.out.find("CUT3DC"), std::string::npos);
 }
 
 TEST_F(CheckCommand, JsonOutputCarriesCountsAndAlarms) {
