@@ -95,7 +95,8 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
 
 void Interpreter::apply_g_words(BlockContext& ctx) {
   // G97 after G96 freezes the speed the spindle has now (an S in the block replaces it later).
-  const double frozen_speed = state_.constant_cutting_speed && ctx.block.has_g(97) ? spindle_speed(ctx) : -1.0;
+  // G97 freezes the speed at the block start: exact, so no warning about the G96 model.
+  const double frozen_speed = state_.constant_cutting_speed && ctx.block.has_g(97) ? spindle_speed(ctx, false) : -1.0;
   int group1 = -1;
   for (const auto& g : ctx.block.g) {
     const int code = g.code;
@@ -234,6 +235,13 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       apply_f_after_tooth_feed(ctx, a);
     } else if (n == "FZ") {
       apply_tooth_feed(ctx, a);
+    } else if (n == "SVC") {
+      apply_cutting_speed(ctx, a);
+    } else if (n == "FB") {
+      // Non-modal feed (Fundamentals, "Non-modal feedrate (FB)"): this block's feed, in the
+      // active feed type; the modal F applies again in the next block.
+      if (a.value < kMinFeed) raise(ctx, 14800, "FB=" + std::to_string(a.value), a.column);
+      ctx.nonmodal_feed = a.value;
     } else if (n == "S" || numbered_spindle(n) > 0) {
       apply_spindle_speed(ctx, a);
     } else if (n == "LIMS") {
@@ -395,7 +403,7 @@ double Interpreter::feed_unit() const {
   return inch ? kMmPerInch : 1.0;
 }
 
-double Interpreter::spindle_speed(const BlockContext& ctx) {
+double Interpreter::spindle_speed(const BlockContext& ctx, bool times_motion) {
   // G331/G332 tap with the spindle in position control (SPOS before, no M3/M4): the speed is
   // the S programmed, the direction the sign of the lead (Fundamentals, "Tapping without
   // compensating chuck (G331, G332)").
@@ -417,7 +425,7 @@ double Interpreter::spindle_speed(const BlockContext& ctx) {
   }
   // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
   // the diameter 2|X| (work coordinates; X: the SCC axis) at the block start, limited by LIMS and MD35100.
-  warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
+  if (times_motion) warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
   const double speed_mm_min = state_.spindle_rpm * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
   // The radius is the position of the SCC axis (default: the transverse axis of MD20100, else X).
   const double diameter = 2.0 * std::abs(block_frame(ctx).to_inner(position_ - length_applied_)[state_.cutting_speed_axis]);

@@ -128,7 +128,10 @@ class Interpreter {
   void apply_f_after_tooth_feed(BlockContext& ctx, const parser::AddressWord& f);
   const ModalState& feed_state(const BlockContext& ctx, ModalState& scratch);
   // The spindle speed the feed and G4 S use (G96 resolved; 0 when it stands).
-  double spindle_speed(const BlockContext& ctx);
+  // SVC=: the spindle speed from a cutting speed and the active tool radius (interpreter_spindle.cpp).
+  void apply_cutting_speed(BlockContext& ctx, const parser::AddressWord& svc);
+  // `times_motion`: the speed times a block (G95, threads, dwell S), so the G96 model is warned.
+  double spindle_speed(const BlockContext& ctx, bool times_motion = true);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
   double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)
   // A thread or tapping block: takes its lead I/J/K and, unless it continues a chain of the

@@ -117,6 +117,7 @@ struct Interpreter::BlockContext {
   double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)
   uint32_t compensation_column = 0;  // the G41/G42 word
   std::optional<double> block_feed;  // F in this block (not a G4 block)
+  std::optional<double> nonmodal_feed;  // FB= of this block: its feed only, F stays modal
   // Extra axes written in this block (synchronized axes): index into the profile, the word.
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block

@@ -1,7 +1,9 @@
 // The programmable spindle speed limits G25 S / G26 S and the dwell in spindle revolutions
 // G4 S / G4 S<n>= (Fundamentals, "Programmable spindle speed limitation (G25, G26)" and
 // "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits").
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 
 #include "interp/interpreter.hpp"
@@ -86,6 +88,20 @@ void Interpreter::emit_dwell(BlockContext& ctx) {
   }
   e.label = "G4";
   emit(std::move(e));
+}
+
+void Interpreter::apply_cutting_speed(BlockContext& ctx, const AddressWord& svc) {
+  // SVC (Fundamentals, "Cutting rate (SVC)"): the speed is S = SVC / (2 * pi * r) with r the
+  // radius of the active cutting edge; SVC in m/min (ft/min on an inch machine). drycut sets S
+  // when SVC is written (the control also recomputes it at a later tool change: not modelled).
+  if (svc.value < 0) raise(ctx, 12160, "SVC must not be negative", svc.column);
+  const double radius_mm = tools_.offsets().radius_mm;
+  if (radius_mm <= 0) {
+    warn_once(ctx, "SVC= without a tool radius (no active cutting edge or radius 0): spindle speed unchanged", svc.column);
+    return;
+  }
+  const double speed_mm_min = svc.value * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+  state_.spindle_rpm = std::min(speed_mm_min / (2.0 * std::numbers::pi * radius_mm), profile_.max_spindle_speed_rpm);
 }
 
 }  // namespace drycut::interp

@@ -30,6 +30,12 @@ void Interpreter::apply_f_after_tooth_feed(BlockContext& ctx, const parser::Addr
 }
 
 const ModalState& Interpreter::feed_state(const BlockContext& ctx, ModalState& scratch) {
+  if (ctx.nonmodal_feed) {  // FB=: this block's feed, whatever F or FZ say
+    scratch = state_;
+    scratch.feed = *ctx.nonmodal_feed;
+    scratch.feed_unit_mm = feed_unit();
+    return scratch;
+  }
   if (state_.tooth_feed <= 0 || state_.feed_mode != FeedMode::PerRevolution || state_.thread_mode()) return state_;
   int teeth = tools_.offsets().teeth;
   if (teeth <= 0) {

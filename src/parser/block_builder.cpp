@@ -248,6 +248,10 @@ class ProgramLoader::BlockBuilder {
       set_alarm(item);
       return;
     }
+    if (item.name == "RET") {
+      parameterised_return(item);
+      return;
+    }
     const Support s = command_support(item.name);
     if (s == Support::NotModelled) {
       l_.warn_not_modelled(item.name, item.column);
@@ -350,6 +354,31 @@ class ProgramLoader::BlockBuilder {
     if (!w.axis.empty()) out_.addresses.push_back(AddressWord{w.axis, w.values[0], ValueMode::Default, item.column});
     out_.poly.push_back(std::move(w));
     has_words_ = true;
+  }
+
+  // RET(target, continue after it, levels, to the start) (Job Planning, "Parameterizable
+  // subprogram return jump"): every argument may be left out.
+  void parameterised_return(const Item& item) {
+    if (item.arg_count > 4) throw LineError(12340, item.column, "RET takes at most 4 parameters");
+    auto arg = [&](uint32_t k) -> std::optional<Value> {
+      if (k >= item.arg_count) return std::nullopt;
+      const ExprIndex a = l_.parsed_.pool.args[item.arg_first + k];
+      if (a == kNoExpr) return std::nullopt;
+      return l_.eval_value(a);
+    };
+    ProgramLoader::ReturnRequest r;
+    if (auto t = arg(0)) r.target = *t;
+    if (auto a = arg(1)) r.after_target = as_number(*a, item.column) != 0;
+    if (auto n = arg(2)) {
+      const double levels = as_number(*n, item.column);
+      if (!(levels >= 1 && levels <= 11) || levels != std::floor(levels))
+        throw LineError(12160, item.column, "RET: return levels must be 1..11");
+      r.levels = static_cast<int>(levels);
+    }
+    if (auto s = arg(3)) r.to_start = as_number(*s, item.column) != 0;
+    l_.return_request_ = r;
+    add_command(item);
+    action_ = PendingAction::Return;
   }
 
   // "OVR=", "FXS[Z]= (travel to fixed stop: ...)": what a warned setting names.

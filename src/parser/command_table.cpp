@@ -171,6 +171,24 @@ constexpr std::array kCommands{
     CommandEntry{"RMN", E},     CommandEntry{"WALIMON", E}, CommandEntry{"WALIMOF", E},
     CommandEntry{"RMBBL", E},   CommandEntry{"RMIBL", E},   CommandEntry{"RMEBL", E},
     CommandEntry{"RMNBL", E},
+    // Sum/setup offsets, tool length and working area in other systems, online tool offset,
+    // 3-D compensation variants, exact-stop criteria of positioning axes, punching, repositioning
+    // (Fundamentals, Job Planning): valid, not modelled, warned by name.
+    CommandEntry{"DL", N},      CommandEntry{"TOWSTD", N},  CommandEntry{"TOWMCS", N},
+    CommandEntry{"TOWWCS", N},  CommandEntry{"TOWBCS", N},  CommandEntry{"TOWTCS", N},
+    CommandEntry{"TOWKCS", N},  CommandEntry{"WALCS0", N},  CommandEntry{"WALCS1", N},
+    CommandEntry{"WALCS2", N},  CommandEntry{"WALCS3", N},  CommandEntry{"WALCS4", N},
+    CommandEntry{"WALCS5", N},  CommandEntry{"WALCS6", N},  CommandEntry{"WALCS7", N},
+    CommandEntry{"WALCS8", N},  CommandEntry{"WALCS9", N},  CommandEntry{"WALCS10", N},
+    CommandEntry{"FTOCON", N},  CommandEntry{"FTOCOF", N},  CommandEntry{"CUT3DCC", N},
+    CommandEntry{"CUT3DCCD", N}, CommandEntry{"CUTCONON", N}, CommandEntry{"CUTCONOF", N},
+    CommandEntry{"FINEA", N},   CommandEntry{"COARSEA", N}, CommandEntry{"IPOENDA", N},
+    CommandEntry{"PDELAYON", N}, CommandEntry{"PDELAYOF", N}, CommandEntry{"SPOF", N},
+    CommandEntry{"SON", N},     CommandEntry{"SONS", N},    CommandEntry{"PON", N},
+    CommandEntry{"PONS", N},    CommandEntry{"SPP", N},     CommandEntry{"SPN", N},
+    CommandEntry{"REPOSA", N},  CommandEntry{"REPOSL", N},  CommandEntry{"REPOSQ", N},
+    CommandEntry{"REPOSQA", N}, CommandEntry{"REPOSH", N},  CommandEntry{"REPOSHA", N},
+    CommandEntry{"DISPR", N},
     // Approach/retract variants and 3-D variants drycut plans as their plain counterpart:
     // KONTC/KONTT (polynomial approach) as KONT with a warning, CDOF2 as CDOF (it differs only
     // in 3-D circumferential milling, CUT3DC), TCOFRX/Y/Z as TCOFR.
@@ -179,11 +197,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 53> kAddresses{
+constexpr std::array<std::string_view, 55> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{

@@ -86,7 +86,22 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
   throw LineError(12550, column, "name " + std::string(name) + " not defined");
 }
 
+// $R[n] / $Rn: the R parameter n, the form synchronized actions use (Job Planning, "R
+// parameters"); the same storage as Rn. Returns n, or none for another name.
+static std::optional<double> r_parameter_index(std::string_view name, std::span<const Value> indices) {
+  if (name == "$R" && indices.size() == 1 && indices[0].is_number()) return indices[0].number;
+  if (name.size() > 2 && name.substr(0, 2) == "$R" && indices.empty() &&
+      std::all_of(name.begin() + 2, name.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return std::stod(std::string(name.substr(2)));
+  return std::nullopt;
+}
+
 std::optional<Value> ProgramLoader::program_variable(std::string_view name, std::span<const Value> indices) const {
+  if (const auto r = r_parameter_index(name, indices)) {
+    if (!(*r >= 0 && *r < static_cast<double>(kRParameterCount)) || *r != std::trunc(*r))
+      throw LineError(12430, 0, "R parameter index must be 0..999");
+    return Value(r_parameters_[static_cast<size_t>(*r)]);
+  }
   if (frames_.empty()) return std::nullopt;
   const Frame& f = *frames_.back();
   // $P_SUBPAR[n]: was parameter n (from 1) given in the call of this program (Job Planning,
@@ -237,6 +252,10 @@ void ProgramLoader::assign_system_variable(const Item& item, Block& out) {
   for (uint32_t k = 0; k < item.index_count && k < 3; ++k) idx[k] = eval_value(parsed_.pool.args[item.index_first + k]);
   const std::span<const Value> indices(idx, item.index_count);
   const Value v = eval_value(item.expr);
+  if (const auto r = r_parameter_index(item.name, indices)) {
+    assign_r_parameter(*r, as_number(v, item.column), item.column);
+    return;
+  }
   if (classify_system_variable(item.name) == SystemVariableClass::Unknown)
     warn(990002, "system variable " + std::string(item.name) + " written (not modelled)", item.column);
   system_variables_.write(item.name, indices, v);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
+#include "parser/ascii_case.hpp"
 #include "parser/command_table.hpp"
 #include "parser/expression_evaluator.hpp"
 #include "parser/line_error.hpp"
@@ -131,7 +133,9 @@ bool ProgramLoader::next(Block& out) {
         break;
       case PendingAction::Return:
         pending_ = PendingAction::None;
-        finish_frame();
+        return_one_level();
+        // RET(..., levels): the next level at once, unless a SAVE block must come between.
+        if (pending_ == PendingAction::Return && pending_save_ == ModalSave::None) continue;
         break;
       case PendingAction::EndProgram:
         pending_ = PendingAction::None;
@@ -311,6 +315,35 @@ void ProgramLoader::end_of_file() {
     raise(990010, "", 1);
   }
   finish_frame();
+}
+
+void ProgramLoader::return_one_level() {
+  ReturnRequest& r = return_request_;
+  if (return_levels_left_ == 0) return_levels_left_ = std::max(1, r.levels);
+  const bool parameterised = r.target || r.levels > 1 || r.to_start;
+  // A parameterised return ends the subprogram whatever passes P had left (drycut's reading).
+  if (parameterised) frames_.back()->passes_left = 1;
+  finish_frame();
+  // Never past the main program: the levels end at it.
+  if (--return_levels_left_ > 0 && frames_.size() > 1) {
+    pending_ = PendingAction::Return;  // the next level after a SAVE block, if one is due
+    return;
+  }
+  return_levels_left_ = 0;
+  const ReturnRequest done = std::exchange(r, ReturnRequest{});
+  if (frames_.empty()) return;
+  if (done.to_start) {
+    jump_to_start();
+  } else if (done.target) {
+    position_ = frames_.back()->reader.tell();  // the search starts at the call, in the caller
+    const Value& t = *done.target;
+    if (t.is_number()) jump_to(JumpDirection::ForwardThenBackward, {}, block_number_of(t.number), 0);
+    else jump_to(JumpDirection::ForwardThenBackward, upper_ascii(t.text), std::nullopt, 0);
+    if (done.after_target) {
+      Frame& f = *frames_.back();
+      f.reader.next(raw_);  // the target block itself is not run
+    }
+  }
 }
 
 void ProgramLoader::finish_frame() {

@@ -98,9 +98,19 @@ class ProgramLoader {
   friend class BlockBuilder;
 
   enum class PendingAction : uint8_t { None, Call, Return, EndProgram };
+  // A parameterised RET(target, after, levels, to_start): where the return goes on.
+  struct ReturnRequest {
+    std::optional<Value> target;  // label (string) or block number in the program returned to
+    bool after_target = false;    // continue after the target block, not at it
+    int levels = 1;               // program levels to return over
+    bool to_start = false;        // continue at the start of the program returned to
+  };
+  ReturnRequest return_request_;
+  int return_levels_left_ = 0;
 
   // program_loader.cpp
   bool read_line(Frame& f);  // next line into text_/position_; false at end of file
+  void return_one_level();   // RET/M17, one program level (RET(...) may ask for more)
   bool execute_line(Block& out);
   void call_program(const std::string& written_name, uint64_t passes, uint32_t column);
   // After a block with axis motion: the MCALL subprogram is due (not from inside it).
