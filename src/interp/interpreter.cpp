@@ -235,6 +235,8 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       apply_f_after_tooth_feed(ctx, a);
     } else if (n == "FZ") {
       apply_tooth_feed(ctx, a);
+    } else if (n == "ANG") {
+      // The contour angle: target_position uses it (interpreter_coordinates.cpp).
     } else if (n == "SVC") {
       apply_cutting_speed(ctx, a);
     } else if (n == "FB") {

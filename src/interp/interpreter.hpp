@@ -154,6 +154,7 @@ class Interpreter {
   bool frame_mirrors_plane(const Frame& frame) const;
   void tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const;
   Target target_position(BlockContext& ctx);
+  void apply_contour_angle(const BlockContext& ctx, const Frame& frame, Target& t);  // ANG= with one end coordinate
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
   // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
   // word is none of them.

@@ -1,6 +1,7 @@
 // Where a block goes: tool length, the frame chain (settable and programmable frames), polar
 // coordinates, and the target of a block in workpiece and machine coordinates.
 #include <cmath>
+#include <numbers>
 
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
@@ -127,6 +128,33 @@ void Interpreter::tilt_compensation_plane(const BlockContext& ctx, CompensationR
   request.tilted_normal = (n[axes.normal] < 0 ? -n : n).normalized();
 }
 
+void Interpreter::apply_contour_angle(const BlockContext& ctx, const Frame& frame, Target& t) {
+  // One straight line by an end coordinate and its angle (Fundamentals, "Contour definitions:
+  // one straight line"): ANG is the angle to the abscissa of the plane, counter-clockwise
+  // positive; the other plane coordinate of the end point follows from the start point.
+  const AddressWord* ang = ctx.block.find_address("ANG");
+  if (!ang) return;
+  const PlaneIndices plane = state_.plane_indices();
+  const bool first = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.first)].name) != nullptr;
+  const bool second = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.second)].name) != nullptr;
+  const bool line = state_.motion == MotionMode::Linear || state_.motion == MotionMode::Rapid;
+  const double a = ang->value * std::numbers::pi / 180.0;
+  const double c = std::cos(a), s = std::sin(a);
+  // A line along the written axis leaves the other coordinate open: not determined.
+  const bool determined = first ? std::abs(c) > 1e-12 : std::abs(s) > 1e-12;
+  if (first == second || !line || polar_words(ctx).any() || !determined) {
+    warn_once(ctx, "ANG= (a contour of two or three straight lines, ANG on a circle, or an angle that leaves the "
+                   "end point open: the block runs to its programmed end point)", ang->column);
+    return;
+  }
+  const Vector3d start = frame.to_inner(position_ - length_applied_);
+  if (first)
+    t.workpiece[plane.second] = start[plane.second] + (t.workpiece[plane.first] - start[plane.first]) * s / c;
+  else
+    t.workpiece[plane.first] = start[plane.first] + (t.workpiece[plane.second] - start[plane.second]) * c / s;
+  t.machine = frame.to_outer(t.workpiece) + t.length_after;
+}
+
 Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
   const double unit = geometry_unit();
   const Frame& frame = block_frame(ctx);
@@ -150,6 +178,7 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
       t.length_after[i] = length[i];
     }
     t.workpiece = frame.to_inner(t.machine - t.length_after);
+    apply_contour_angle(ctx, frame, t);
     return t;
   }
   // Through the workpiece system of the tool tip: axes not written keep their workpiece
@@ -166,6 +195,7 @@ Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
   }
   if (polar.any()) t.workpiece = state_.polar.target(polar, state_.plane_indices(), t.workpiece);
   t.machine = frame.to_outer(t.workpiece) + t.length_after;
+  apply_contour_angle(ctx, frame, t);
   return t;
 }
 

@@ -81,10 +81,8 @@ constexpr std::array kCommands{
     CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
     CommandEntry{"ORIPATH", N}, CommandEntry{"ORIPATHS", N}, CommandEntry{"STOPREOF", N},
     CommandEntry{"FA", M},      CommandEntry{"DYNPREC", M},
-    // Contour definition by an angle (Fundamentals, "Contour definitions"): the end point
-    // follows from ANG. Not modelled yet: the block runs to its programmed point (a warning).
-    // The corner words RND, RNDM, CHF, CHR, FRC, FRCM are addresses (kAddresses below).
-    CommandEntry{"ANG", N},
+    // Contour definition by an angle (Fundamentals, "Contour definitions"): ANG is an address
+    // (kAddresses below), as are the corner words RND, RNDM, CHF, CHR, FRC, FRCM.
     // Smooth approach and retraction parameters, G75/G751 fixed point, tool offsets along the
     // path, lead/tilt angles, continuous measurement (Fundamentals, Job Planning).
     CommandEntry{"DISR", N},    CommandEntry{"DISRP", N},   CommandEntry{"FAD", N},
@@ -197,11 +195,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 55> kAddresses{
+constexpr std::array<std::string_view, 56> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC", "ANG"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{
