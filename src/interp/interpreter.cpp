@@ -267,6 +267,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       std::vector<ToolNotice> notices;
       tools_.select_edge(static_cast<int>(a.value), notices);
       report_tool_notices(ctx, notices, a.column);
+      speed_from_cutting_speed(ctx, a.column);  // SVC: the new edge's radius
     } else if (n == "SD") {
       if (a.value != 2 && a.value != 3) raise(ctx, 12160, "SD must be 2 or 3", a.column);
       state_.bspline_degree = static_cast<int>(a.value);
@@ -303,6 +304,7 @@ void Interpreter::apply_spindle_speed(BlockContext& ctx, const AddressWord& a) {
     return;
   }
   state_.spindle_rpm = a.value;
+  state_.cutting_speed_svc = 0.0;  // S and SVC replace each other
 }
 
 int Interpreter::numbered_spindle(std::string_view name) {
@@ -392,6 +394,7 @@ void Interpreter::change_tool(BlockContext& ctx) {
   std::vector<ToolNotice> notices;
   tools_.change_tool(d, notices);
   report_tool_notices(ctx, notices, column);
+  speed_from_cutting_speed(ctx, column);  // SVC: the new tool's radius
   const std::string tool = tools_.active_tool().value_or("0");
   emit_control(ctx, ElementKind::ToolChange,
                tools_.change_on_m_code() ? "M" + std::to_string(tools_.change_m_code()) + " " + tool : "T " + tool);

@@ -130,6 +130,7 @@ class Interpreter {
   // The spindle speed the feed and G4 S use (G96 resolved; 0 when it stands).
   // SVC=: the spindle speed from a cutting speed and the active tool radius (interpreter_spindle.cpp).
   void apply_cutting_speed(BlockContext& ctx, const parser::AddressWord& svc);
+  void speed_from_cutting_speed(const BlockContext& ctx, uint32_t column);  // S from SVC and the edge radius
   // `times_motion`: the speed times a block (G95, threads, dwell S), so the G96 model is warned.
   double spindle_speed(const BlockContext& ctx, bool times_motion = true);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)

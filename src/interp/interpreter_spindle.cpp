@@ -92,15 +92,21 @@ void Interpreter::emit_dwell(BlockContext& ctx) {
 
 void Interpreter::apply_cutting_speed(BlockContext& ctx, const AddressWord& svc) {
   // SVC (Fundamentals, "Cutting rate (SVC)"): the speed is S = SVC / (2 * pi * r) with r the
-  // radius of the active cutting edge; SVC in m/min (ft/min on an inch machine). drycut sets S
-  // when SVC is written (the control also recomputes it at a later tool change: not modelled).
+  // radius of the active cutting edge; SVC in m/min (ft/min on an inch machine). It stays in
+  // force (a new tool or edge gives a new S) until an S is programmed.
   if (svc.value < 0) raise(ctx, 12160, "SVC must not be negative", svc.column);
+  state_.cutting_speed_svc = svc.value;
+  speed_from_cutting_speed(ctx, svc.column);
+}
+
+void Interpreter::speed_from_cutting_speed(const BlockContext& ctx, uint32_t column) {
+  if (state_.cutting_speed_svc <= 0) return;
   const double radius_mm = tools_.offsets().radius_mm;
   if (radius_mm <= 0) {
-    warn_once(ctx, "SVC= without a tool radius (no active cutting edge or radius 0): spindle speed unchanged", svc.column);
+    warn_once(ctx, "SVC= without a tool radius (no active cutting edge or radius 0): spindle speed unchanged", column);
     return;
   }
-  const double speed_mm_min = svc.value * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+  const double speed_mm_min = state_.cutting_speed_svc * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
   state_.spindle_rpm = std::min(speed_mm_min / (2.0 * std::numbers::pi * radius_mm), profile_.max_spindle_speed_rpm);
 }
 

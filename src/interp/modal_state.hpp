@@ -53,6 +53,7 @@ struct ModalState {
   double tooth_feed = 0.0;
   double tooth_feed_unit_mm = 1.0;  // as feed_unit_mm, for FZ
   double spindle_rpm = 0.0;
+  double cutting_speed_svc = 0.0;  // SVC= in m/min (ft/min), 0: the speed is the S programmed
   SpindleState spindle = SpindleState::Stopped;
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
   SmoothingRequest smoothing;  // G641..G645 and ADIS/ADISPOS/CTOL/ATOL (corner_smoothing.hpp)
