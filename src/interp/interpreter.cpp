@@ -556,6 +556,8 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   bool has_axis = false;
   for (const AddressWord& a : ctx.block.addresses)
     if (axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP") has_axis = true;
+  if (hold_contour_angle(ctx, has_axis)) return;
+  if (held_angle_deg_ && has_axis) run_to_contour_corner(ctx);
   const bool arc_mode = state_.motion == MotionMode::ArcCw || state_.motion == MotionMode::ArcCcw;
   // A full circle needs no end point: G2 I10 is a motion block.
   const bool full_circle = arc_mode && !has_axis &&

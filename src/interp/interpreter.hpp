@@ -156,6 +156,9 @@ class Interpreter {
   void tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const;
   Target target_position(BlockContext& ctx);
   void apply_contour_angle(const BlockContext& ctx, const Frame& frame, Target& t);  // ANG= with one end coordinate
+  // Two straight lines by angles: holds the first ANG=, then runs the first line to the corner.
+  bool hold_contour_angle(const BlockContext& ctx, bool has_axis);
+  void run_to_contour_corner(BlockContext& ctx);
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
   // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
   // word is none of them.
@@ -199,6 +202,7 @@ class Interpreter {
   SplineBlockQuota quota_;
   DynamicsMode last_dynamics_;
   bool ended_ = false;
+  std::optional<double> held_angle_deg_;  // ANG= of a block without end point: the first of two lines
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any

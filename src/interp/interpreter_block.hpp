@@ -118,6 +118,7 @@ struct Interpreter::BlockContext {
   uint32_t compensation_column = 0;  // the G41/G42 word
   std::optional<double> block_feed;  // F in this block (not a G4 block)
   std::optional<double> nonmodal_feed;  // FB= of this block: its feed only, F stays modal
+  bool contour_corner_done = false;     // the first of two ANG= lines ran: the angle is used
   // Extra axes written in this block (synchronized axes): index into the profile, the word.
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block

@@ -2,6 +2,8 @@
 // coordinates, and the target of a block in workpiece and machine coordinates.
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
@@ -133,7 +135,7 @@ void Interpreter::apply_contour_angle(const BlockContext& ctx, const Frame& fram
   // one straight line"): ANG is the angle to the abscissa of the plane, counter-clockwise
   // positive; the other plane coordinate of the end point follows from the start point.
   const AddressWord* ang = ctx.block.find_address("ANG");
-  if (!ang) return;
+  if (!ang || ctx.contour_corner_done) return;
   const PlaneIndices plane = state_.plane_indices();
   const bool first = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.first)].name) != nullptr;
   const bool second = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.second)].name) != nullptr;
@@ -153,6 +155,54 @@ void Interpreter::apply_contour_angle(const BlockContext& ctx, const Frame& fram
   else
     t.workpiece[plane.first] = start[plane.first] + (t.workpiece[plane.second] - start[plane.second]) * c / s;
   t.machine = frame.to_outer(t.workpiece) + t.length_after;
+}
+
+bool Interpreter::hold_contour_angle(const BlockContext& ctx, bool has_axis) {
+  // Two straight lines (Fundamentals, "Contour definitions: two straight lines"): a G0/G1 block
+  // with ANG= and no end point gives the first line's direction; the next block gives the end
+  // point and the second line's angle, and the corner is where the two lines meet.
+  const AddressWord* ang = ctx.block.find_address("ANG");
+  const bool line = state_.motion == MotionMode::Linear || state_.motion == MotionMode::Rapid;
+  if (!ang || has_axis || !line) return false;
+  held_angle_deg_ = ang->value;
+  return true;
+}
+
+void Interpreter::run_to_contour_corner(BlockContext& ctx) {
+  const double first_deg = *std::exchange(held_angle_deg_, std::nullopt);
+  const AddressWord* ang = ctx.block.find_address("ANG");
+  const PlaneIndices plane = state_.plane_indices();
+  const auto written = [&](int i) { return ctx.block.find_address(profile_.axes[static_cast<size_t>(i)].name); };
+  const AddressWord* a1 = written(plane.first);
+  const AddressWord* a2 = written(plane.second);
+  const bool line = state_.motion == MotionMode::Linear || state_.motion == MotionMode::Rapid;
+  const bool absolute = a1 && a2 && !is_incremental(*a1) && !is_incremental(*a2);
+  if (!ang || !line || !absolute || polar_words(ctx).any()) {
+    warn_once(ctx, "ANG= contour of two straight lines whose second block is not a G0/G1 with both absolute end "
+                   "coordinates and ANG= (the first angle is dropped)", ang ? ang->column : 0);
+    return;
+  }
+  ctx.contour_corner_done = true;  // this block's ANG= is the second line's: no other meaning
+  const Frame& frame = block_frame(ctx);
+  const Vector3d start = frame.to_inner(position_ - length_applied_);
+  const Vector3d end = target_position(ctx).workpiece;
+  const double t1 = first_deg * std::numbers::pi / 180.0, t2 = ang->value * std::numbers::pi / 180.0;
+  const double d1x = std::cos(t1), d1y = std::sin(t1), d2x = std::cos(t2), d2y = std::sin(t2);
+  const double ex = end[plane.first] - start[plane.first], ey = end[plane.second] - start[plane.second];
+  const double denominator = d1x * d2y - d1y * d2x;
+  if (std::abs(denominator) < 1e-12) {
+    warn_once(ctx, "ANG= contour of two parallel straight lines (no corner: the block runs to its end point)", ang->column);
+    return;
+  }
+  const double along = (ex * d2y - ey * d2x) / denominator;  // S + along * d1 = E + u * d2
+  Vector3d corner = start;
+  corner[plane.first] += along * d1x;
+  corner[plane.second] += along * d1y;
+  corner[plane.normal] = end[plane.normal];  // the infeed axis moves with the first line
+  PathElement e = build_line(ctx, frame.to_outer(corner) + length_applied_);
+  position_ = e.curve->end();
+  check_limits(ctx, position_);
+  emit(std::move(e));
 }
 
 Interpreter::Target Interpreter::target_position(BlockContext& ctx) {
