@@ -186,7 +186,7 @@ constexpr std::array kCommands{
     CommandEntry{"PONS", N},    CommandEntry{"SPP", N},     CommandEntry{"SPN", N},
     CommandEntry{"REPOSA", N},  CommandEntry{"REPOSL", N},  CommandEntry{"REPOSQ", N},
     CommandEntry{"REPOSQA", N}, CommandEntry{"REPOSH", N},  CommandEntry{"REPOSHA", N},
-    CommandEntry{"DISPR", N},
+    CommandEntry{"DISPR", N},   CommandEntry{"SCPARA", N},  // SCPARA[ax]=: servo parameter set
     // Approach/retract variants and 3-D variants drycut plans as their plain counterpart:
     // KONTC/KONTT (polynomial approach) as KONT with a warning, CDOF2 as CDOF (it differs only
     // in 3-D circumferential milling, CUT3DC), TCOFRX/Y/Z as TCOFR.
