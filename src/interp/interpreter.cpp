@@ -408,6 +408,11 @@ double Interpreter::feed_unit() const {
   return inch ? kMmPerInch : 1.0;
 }
 
+double Interpreter::cutting_speed_mm_min(double speed) const {
+  // G96 S and SVC are m/min, ft/min on a machine whose base system is inch.
+  return speed * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+}
+
 double Interpreter::spindle_speed(const BlockContext& ctx, bool times_motion) {
   // G331/G332 tap with the spindle in position control (SPOS before, no M3/M4): the speed is
   // the S programmed, the direction the sign of the lead (Fundamentals, "Tapping without
@@ -431,7 +436,7 @@ double Interpreter::spindle_speed(const BlockContext& ctx, bool times_motion) {
   // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
   // the diameter 2|X| (work coordinates; X: the SCC axis) at the block start, limited by LIMS and MD35100.
   if (times_motion) warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
-  const double speed_mm_min = state_.spindle_rpm * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+  const double speed_mm_min = cutting_speed_mm_min(state_.spindle_rpm);
   // The radius is the position of the SCC axis (default: the transverse axis of MD20100, else X).
   const double diameter = 2.0 * std::abs(block_frame(ctx).to_inner(position_ - length_applied_)[state_.cutting_speed_axis]);
   double rpm = diameter > 1e-9 ? speed_mm_min / (std::numbers::pi * diameter) : profile_.max_spindle_speed_rpm;

@@ -99,6 +99,7 @@ class Interpreter {
   bool apply_turning_command(BlockContext& ctx, const parser::CommandWord& command);
   void add_positioning(BlockContext& ctx, const parser::AxisWord& word);
   void set_axis_limit(BlockContext& ctx, const parser::AxisWord& word);  // ACC/VELOLIM/JERKLIM[ax]=
+  bool names_channel_axis(const std::string& name) const;  // the axis of FA[..], ACC[..] is valid
   void add_spindle_positioning(BlockContext& ctx, const parser::AxisWord& word);
   std::vector<ExtraAxisMove> take_extra_axis_moves(BlockContext& ctx);
   // Moves extra axis i to a programmed value (alarms 168xx, 10720); returns the travel.
@@ -134,6 +135,7 @@ class Interpreter {
   // `times_motion`: the speed times a block (G95, threads, dwell S), so the G96 model is warned.
   double spindle_speed(const BlockContext& ctx, bool times_motion = true);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
+  double cutting_speed_mm_min(double speed) const;  // G96 S / SVC (m/min or ft/min) in mm/min
   double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)
   // A thread or tapping block: takes its lead I/J/K and, unless it continues a chain of the
   // same kind, emits the profile's spindle_ramp_time as a dwell before it.

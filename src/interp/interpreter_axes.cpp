@@ -91,9 +91,7 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
         if (i < 0) {
           // A geometry axis, an axis letter the profile lacks (as POS[A]) or a spindle
           // (FA[SPI(1)]: the speed of SPOS): valid, not modelled.
-          const bool spindle = w.axis.size() > 2 && w.axis.rfind("SP", 0) == 0;
-          if (axis_index(w.axis) < 0 && !is_axis_letter_name(w.axis) && !spindle)
-            raise(ctx, 12550, "FA[" + w.axis + "]: not an axis of the channel", w.column);
+          if (!names_channel_axis(w.axis)) raise(ctx, 12550, "FA[" + w.axis + "]: not an axis of the channel", w.column);
           warn_once(ctx, "FA[" + w.axis + "] (the feed of a positioning axis or spindle drycut does not simulate)", w.column);
           continue;
         }
@@ -113,6 +111,13 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
   }
 }
 
+bool Interpreter::names_channel_axis(const std::string& name) const {
+  // X/Y/Z, the profile's extra axes, an axis letter the profile lacks (warned where used) or a
+  // spindle SP<n>: an axis-indexed word (FA[..], ACC[..]) with any other name is alarm 12550.
+  return axis_index(name) >= 0 || extra_axes_.index(name) >= 0 || is_axis_letter_name(name) ||
+         is_spindle_axis_name(name);
+}
+
 void Interpreter::set_axis_limit(BlockContext& ctx, const AxisWord& w) {
   // ACC 1..200 % (0: off, i.e. 100 %), VELOLIM 1..100 %, JERKLIM 1..200 %, modal per axis. A
   // value outside the range is limited to it with warning 990013 (drycut does not know the
@@ -121,8 +126,7 @@ void Interpreter::set_axis_limit(BlockContext& ctx, const AxisWord& w) {
   const std::string word = std::string(name) + "[" + w.axis + "]";
   const int i = axis_index(w.axis);
   if (i < 0) {
-    if (extra_axes_.index(w.axis) < 0 && !is_axis_letter_name(w.axis) && w.axis.rfind("SP", 0) != 0)
-      raise(ctx, 12550, word + ": not an axis of the channel", w.column);
+    if (!names_channel_axis(w.axis)) raise(ctx, 12550, word + ": not an axis of the channel", w.column);
     warn_once(ctx, word + " (limits of an axis other than X, Y, Z are not modelled)", w.column);
     return;
   }

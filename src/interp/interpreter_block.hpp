@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the interpreter's files (interpreter.cpp, interpreter_coordinates.cpp,
 // interpreter_curves.cpp): the value ranges, small conversions and the per-block context.
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,6 +41,12 @@ inline int axis_index(std::string_view name) {
 // on a machine whose profile lacks them (a warning, never an alarm).
 inline bool is_axis_letter_name(std::string_view n) {
   return n.size() == 1 && std::string_view("ABCUVW").find(n[0]) != std::string_view::npos;
+}
+
+// A spindle as an axis, SP<n> (what SPI(n) gives: FA[SPI(1)], ACC[SPI(1)]).
+inline bool is_spindle_axis_name(std::string_view n) {
+  return n.size() > 2 && n.substr(0, 2) == "SP" &&
+         std::all_of(n.begin() + 2, n.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 inline geometry::Plane to_geometry_plane(PlaneSelect plane) {

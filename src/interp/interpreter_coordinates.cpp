@@ -139,12 +139,11 @@ void Interpreter::apply_contour_angle(const BlockContext& ctx, const Frame& fram
   const PlaneIndices plane = state_.plane_indices();
   const bool first = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.first)].name) != nullptr;
   const bool second = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.second)].name) != nullptr;
-  const bool line = state_.motion == MotionMode::Linear || state_.motion == MotionMode::Rapid;
   const double a = ang->value * std::numbers::pi / 180.0;
   const double c = std::cos(a), s = std::sin(a);
   // A line along the written axis leaves the other coordinate open: not determined.
   const bool determined = first ? std::abs(c) > 1e-12 : std::abs(s) > 1e-12;
-  if (first == second || !line || polar_words(ctx).any() || !determined) {
+  if (first == second || !state_.straight_mode() || polar_words(ctx).any() || !determined) {
     warn_once(ctx, "ANG= (a contour of two or three straight lines, ANG on a circle, or an angle that leaves the "
                    "end point open: the block runs to its programmed end point)", ang->column);
     return;
@@ -162,8 +161,7 @@ bool Interpreter::hold_contour_angle(const BlockContext& ctx, bool has_axis) {
   // with ANG= and no end point gives the first line's direction; the next block gives the end
   // point and the second line's angle, and the corner is where the two lines meet.
   const AddressWord* ang = ctx.block.find_address("ANG");
-  const bool line = state_.motion == MotionMode::Linear || state_.motion == MotionMode::Rapid;
-  if (!ang || has_axis || !line) return false;
+  if (!ang || has_axis || !state_.straight_mode()) return false;
   held_angle_deg_ = ang->value;
   return true;
 }
@@ -175,9 +173,8 @@ void Interpreter::run_to_contour_corner(BlockContext& ctx) {
   const auto written = [&](int i) { return ctx.block.find_address(profile_.axes[static_cast<size_t>(i)].name); };
   const AddressWord* a1 = written(plane.first);
   const AddressWord* a2 = written(plane.second);
-  const bool line = state_.motion == MotionMode::Linear || state_.motion == MotionMode::Rapid;
   const bool absolute = a1 && a2 && !is_incremental(*a1) && !is_incremental(*a2);
-  if (!ang || !line || !absolute || polar_words(ctx).any()) {
+  if (!ang || !state_.straight_mode() || !absolute || polar_words(ctx).any()) {
     warn_once(ctx, "ANG= contour of two straight lines whose second block is not a G0/G1 with both absolute end "
                    "coordinates and ANG= (the first angle is dropped)", ang ? ang->column : 0);
     return;

@@ -106,8 +106,8 @@ void Interpreter::speed_from_cutting_speed(const BlockContext& ctx, uint32_t col
     warn_once(ctx, "SVC= without a tool radius (no active cutting edge or radius 0): spindle speed unchanged", column);
     return;
   }
-  const double speed_mm_min = state_.cutting_speed_svc * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
-  state_.spindle_rpm = std::min(speed_mm_min / (2.0 * std::numbers::pi * radius_mm), profile_.max_spindle_speed_rpm);
+  state_.spindle_rpm = std::min(cutting_speed_mm_min(state_.cutting_speed_svc) / (2.0 * std::numbers::pi * radius_mm),
+                                profile_.max_spindle_speed_rpm);
 }
 
 }  // namespace drycut::interp

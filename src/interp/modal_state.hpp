@@ -90,6 +90,8 @@ struct ModalState {
            motion == MotionMode::ThreadDecreasing || motion == MotionMode::Tapping ||
            motion == MotionMode::TappingRetract;
   }
+  // G0 or G1: the motions a contour definition by angle (ANG=) applies to.
+  bool straight_mode() const { return motion == MotionMode::Linear || motion == MotionMode::Rapid; }
   bool spline_mode() const {
     return motion == MotionMode::ASpline || motion == MotionMode::BSpline || motion == MotionMode::CSpline;
   }

@@ -243,6 +243,17 @@ class ProgramLoader::BlockBuilder {
     return c;
   }
 
+  // A valid command drycut does not model (warned by name) or that changes nothing it plans:
+  // not handed on, except a transformation (the interpreter suspends the software limits).
+  bool skipped_command(const Item& item, Support s) {
+    if (s == Support::NotModelled) {
+      l_.warn_not_modelled(item.name, item.column);
+      if (is_transformation_command(item.name)) add_command(item);
+      return true;
+    }
+    return s == Support::NoEffect;
+  }
+
   void procedure(const Item& item) {
     if (item.name == "SETAL") {
       set_alarm(item);
@@ -253,13 +264,7 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     const Support s = command_support(item.name);
-    if (s == Support::NotModelled) {
-      l_.warn_not_modelled(item.name, item.column);
-      // The interpreter still needs to know a transformation is on (software limits).
-      if (is_transformation_command(item.name)) add_command(item);
-      return;
-    }
-    if (s == Support::NoEffect) return;
+    if (skipped_command(item, s)) return;
     if (s == Support::Modelled) {
       CommandWord& c = add_command(item);
       c.has_parentheses = true;
@@ -307,13 +312,7 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     const Support s = command_support(item.name);
-    if (s == Support::NotModelled) {
-      l_.warn_not_modelled(item.name, item.column);
-      // The interpreter still needs to know a transformation is on (software limits).
-      if (is_transformation_command(item.name)) add_command(item);
-      return;
-    }
-    if (s == Support::NoEffect) return;
+    if (skipped_command(item, s)) return;
     if (s == Support::Modelled) {
       CommandWord& c = add_command(item);
       if (item.name == "RET") action_ = PendingAction::Return;

@@ -189,13 +189,7 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
     return;
   }
   if (target.expr != kNoExpr) {
-    // A computed target: a string is a label, a number a block number.
-    const Value v = eval_value(target.expr);
-    if (v.is_number()) {
-      jump_to(direction, {}, block_number_of(v.number), target.column);
-    } else {
-      jump_to(direction, upper_ascii(v.text), std::nullopt, target.column);
-    }
+    jump_to_value(direction, eval_value(target.expr), target.column);
     return;
   }
   if (!target.label.empty()) {
@@ -206,6 +200,12 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
     }
   }
   jump_to(direction, std::string(target.label), target.number, target.column);
+}
+
+void ProgramLoader::jump_to_value(JumpDirection direction, const Value& target, uint32_t column) {
+  // A computed target: a string is a label, a number a block number.
+  if (target.is_number()) jump_to(direction, {}, block_number_of(target.number), column);
+  else jump_to(direction, upper_ascii(target.text), std::nullopt, column);
 }
 
 void ProgramLoader::jump_to_start() {

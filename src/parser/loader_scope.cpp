@@ -97,11 +97,7 @@ static std::optional<double> r_parameter_index(std::string_view name, std::span<
 }
 
 std::optional<Value> ProgramLoader::program_variable(std::string_view name, std::span<const Value> indices) const {
-  if (const auto r = r_parameter_index(name, indices)) {
-    if (!(*r >= 0 && *r < static_cast<double>(kRParameterCount)) || *r != std::trunc(*r))
-      throw LineError(12430, 0, "R parameter index must be 0..999");
-    return Value(r_parameters_[static_cast<size_t>(*r)]);
-  }
+  if (const auto r = r_parameter_index(name, indices)) return Value(scope_->r_parameter(*r, 0));
   if (frames_.empty()) return std::nullopt;
   const Frame& f = *frames_.back();
   // $P_SUBPAR[n]: was parameter n (from 1) given in the call of this program (Job Planning,

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <utility>
 
-#include "parser/ascii_case.hpp"
 #include "parser/command_table.hpp"
 #include "parser/expression_evaluator.hpp"
 #include "parser/line_error.hpp"
@@ -336,9 +335,7 @@ void ProgramLoader::return_one_level() {
     jump_to_start();
   } else if (done.target) {
     position_ = frames_.back()->reader.tell();  // the search starts at the call, in the caller
-    const Value& t = *done.target;
-    if (t.is_number()) jump_to(JumpDirection::ForwardThenBackward, {}, block_number_of(t.number), 0);
-    else jump_to(JumpDirection::ForwardThenBackward, upper_ascii(t.text), std::nullopt, 0);
+    jump_to_value(JumpDirection::ForwardThenBackward, *done.target, 0);
     if (done.after_target) {
       Frame& f = *frames_.back();
       f.reader.next(raw_);  // the target block itself is not run

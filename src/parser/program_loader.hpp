@@ -155,6 +155,7 @@ class ProgramLoader {
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to_start();
+  void jump_to_value(JumpDirection direction, const Value& target, uint32_t column);  // GOTO "L"<<R1, RET("L")
   void jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
   std::optional<LinePosition> find_label_position(const std::string& label);
   Statement skip_forward(bool stop_at_else);
