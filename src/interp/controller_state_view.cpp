@@ -51,36 +51,7 @@ int code_index(int code) {
   return parser::g_group_of_code(code, group, index) ? index : 0;
 }
 
-// The dry run's clock (deterministic, so that a run does not depend on when it is made): it
-// reads 08:00:00 on Monday 1 January 2024 at the program start and runs with the interpreter's
-// time, the path length over the feed plus dwells (a lower bound of the planned time).
-constexpr double kClockStartS = 8 * 3600.0;
-
-std::optional<double> clock_field(std::string_view n, double elapsed_s) {
-  const double t = kClockStartS + elapsed_s;
-  const double day = std::floor(t / 86400.0);
-  const double in_day = t - day * 86400.0;
-  if (n == "$A_HOUR") return std::floor(in_day / 3600.0);
-  if (n == "$A_MINUTE") return std::floor(std::fmod(in_day, 3600.0) / 60.0);
-  if (n == "$A_SECOND") return std::floor(std::fmod(in_day, 60.0));
-  if (n == "$A_MSECOND") return std::floor(std::fmod(in_day * 1000.0, 1000.0));
-  // Days beyond the first stay in January (a dry run of more than 30 days is not a use case).
-  if (n == "$A_DAY") return 1.0 + std::min(day, 30.0);
-  if (n == "$A_MONTH") return 1.0;
-  if (n == "$A_YEAR") return 2024.0;
-  return std::nullopt;
-}
-
 }  // namespace
-
-std::optional<double> InterpreterStateView::run_clock(std::string_view n) const {
-  const double elapsed = interpreter_.nominal_time_s();
-  // Run-time counters (Job Planning, "$AC_OPERATING_TIME", "$AC_CYCLE_TIME" in s; $AN_SETUP_TIME,
-  // $AN_POWERON_TIME in min): the program is the only thing the dry-run control has run.
-  if (n == "$AC_OPERATING_TIME" || n == "$AC_CYCLE_TIME" || n == "$AC_CUTTING_TIME") return elapsed;
-  if (n == "$AN_SETUP_TIME" || n == "$AN_POWERON_TIME") return elapsed / 60.0;
-  return clock_field(n, elapsed);
-}
 
 std::optional<Value> InterpreterStateView::tool_presence(std::string_view n, std::span<const Value> indices) const {
   if (indices.size() != 1 || !indices[0].is_number()) return std::nullopt;
@@ -175,7 +146,6 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
     return Value(-1.0);
   }
   if (n == "$AC_TIME" || n == "$AC_PATHN") return Value(0.0);
-  if (auto v = run_clock(n)) return Value(*v);
   if (auto v = tool_presence(n, indices)) return v;
   // The geometry axes of the plane (Job Planning, "$P_AXN1..3"): abscissa, ordinate, applicate.
   if ((n == "$P_AXN1" || n == "$P_AXN2" || n == "$P_AXN3") && indices.empty()) {

@@ -16,22 +16,23 @@ namespace drycut::interp {
 
 class InterpreterStateView : public parser::ControllerStateView {
  public:
-  InterpreterStateView(const Interpreter& interpreter, const machine::MachineProfile& profile)
+  // Not const: a read of the run clock waits for the main run (Interpreter::poll_clock).
+  InterpreterStateView(Interpreter& interpreter, const machine::MachineProfile& profile)
       : interpreter_(interpreter), profile_(profile) {}
   std::optional<parser::Value> read_system_variable(std::string_view upper_name,
                                                     std::span<const parser::Value> indices) const override;
   double elapsed_s() const override { return interpreter_.nominal_time_s(); }
+  double poll_clock(uint64_t line) const override { return interpreter_.poll_clock(line); }
 
  private:
   std::optional<double> g_group_index(int group) const;
-  std::optional<double> run_clock(std::string_view name) const;  // $AC_OPERATING_TIME, $A_HOUR ...
   std::optional<parser::Value> tool_presence(std::string_view name, std::span<const parser::Value> indices) const;
   std::optional<double> axis_position(std::span<const parser::Value> indices) const;
   std::optional<double> tool_datum(int parameter, std::span<const parser::Value> indices) const;
   static int settable_frame_number(const std::string& work_offset);  // G54 -> 1 ...
   static parser::Value frame_value(const Frame& frame, double unit);  // CFRAME(...) text
 
-  const Interpreter& interpreter_;
+  Interpreter& interpreter_;
   const machine::MachineProfile& profile_;
 };
 

@@ -61,6 +61,7 @@ void Interpreter::execute(const parser::Block& block) {
   corners_.begin_block();
   BlockContext ctx(block);
   ctx.simple = is_simple_block(block);
+  if (clock_wait_s_ > 0) emit_clock_wait(ctx);
   apply_system_writes(block);
   apply_g_words(ctx);
   apply_commands(ctx);
@@ -487,7 +488,26 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
   emit(std::move(e));
 }
 
+double Interpreter::poll_clock(uint64_t line) {
+  if (line != line_at_poll_) {
+    if (emitted_ == emitted_at_poll_) clock_wait_s_ += profile_.ipo_cycle_s;
+    emitted_at_poll_ = emitted_;
+    line_at_poll_ = line;
+  }
+  return nominal_time_s();
+}
+
+void Interpreter::emit_clock_wait(const BlockContext& ctx) {
+  // The polls since the last element: the program waited for the clock before this block.
+  PathElement e = element_template(ctx, ElementKind::Dwell);
+  e.dwell_s = clock_wait_s_;
+  e.label = "waiting for the clock";
+  clock_wait_s_ = 0.0;
+  emit(std::move(e));
+}
+
 void Interpreter::emit(PathElement&& element) {
+  ++emitted_;
   add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;
@@ -644,6 +664,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
 
 void Interpreter::finish() {
   if (spline_.active()) end_spline_run(nullptr);
+  if (clock_wait_s_ > 0 && !ended_) {  // the program ran out while waiting for the clock
+    const parser::Block none;
+    emit_clock_wait(BlockContext(none));
+  }
   sink_.finish();
 }
 

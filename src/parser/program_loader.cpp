@@ -99,6 +99,7 @@ bool ProgramLoader::read_line(Frame& f) {
     if (!f.repeats.empty() && end_of_repeat_section(f)) continue;
     break;
   }
+  system_variables_.begin_line();
   if (++steps_ > options_.max_steps) {
     text_.clear();
     raise(990004, "more than " + std::to_string(options_.max_steps) + " lines executed", 0);

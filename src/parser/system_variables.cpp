@@ -1,5 +1,7 @@
 #include "parser/system_variables.hpp"
 
+#include "parser/run_clock.hpp"
+
 #include <array>
 
 #include "parser/expression_evaluator.hpp"
@@ -55,14 +57,18 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   const std::string key = system_variable_key(name, indices);
   if (name == "$AC_TIMER") {
     // Job Planning, "Timer variable $AC_TIMER[n]": counts seconds from the value written (>= 0)
-    // until -1 stops it. Time is the interpreter's (elapsed_s), so a timed warm-up loop ends.
+    // until -1 stops it. Time is the interpreter's (poll_clock), so a timed warm-up loop ends.
     if (auto it = timer_start_.find(key); it != timer_start_.end())
-      return {Value((view_ ? view_->elapsed_s() : 0.0) - it->second), false};
+      return {Value((view_ ? view_->poll_clock(line_) : 0.0) - it->second), false};
     if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
     return {Value(0.0), false};
   }
   if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
   if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
+  if (run_clock_reading(name, 0.0)) {
+    ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
+    return {Value(*run_clock_reading(name, view_ ? view_->poll_clock(line_) : 0.0)), false};
+  }
   const SystemVariableClass c = classify_system_variable(name);
   if (c == SystemVariableClass::InputOutput) {
     ++input_reads_;

@@ -6,7 +6,8 @@
 //                                   (key as written, e.g. "$MA_COMPRESS_POS_TOL[X1]"); a name
 //                                   the profile lacks reads 0 with one warning naming it
 //   $P_ $AA_ $AC_ $VA_ $A_ (state)   programmed and actual state: asked of the controller view
-//                                   (the interpreter in `run`; in a dry run actual = programmed)
+//                                   (the interpreter in `run`; in a dry run actual = programmed);
+//                                   the run clock and $AC_TIMER from its time (run_clock.hpp)
 //   $A_IN $A_OUT $A_INA $A_OUTA $A_DBB $A_DBW $A_DBD $A_DBR   inputs, outputs, PLC data:
 //                                   the profile's `machine_data` map, default 0 (documented)
 //   $TC_                            tool data: written values, else the controller view
@@ -38,8 +39,12 @@ class ControllerStateView {
  public:
   virtual ~ControllerStateView() = default;
   virtual std::optional<Value> read_system_variable(std::string_view upper_name, std::span<const Value> indices) const = 0;
-  // Seconds the program has run so far, as far as the interpreter knows (timers $AC_TIMER).
+  // Seconds the program has run so far, as far as the interpreter knows.
   virtual double elapsed_s() const { return 0.0; }
+  // The same, for a read of the run clock ($AC_TIMER, $AC_OPERATING_TIME, $A_SECOND ...) on
+  // program line `line` (a running count of lines executed): such a read waits for the main
+  // run, so a program that polls the clock lets time pass (Interpreter::poll_clock).
+  virtual double poll_clock(uint64_t /*line*/) const { return elapsed_s(); }
 };
 
 using MachineDataMap = std::map<std::string, double, std::less<>>;
@@ -50,6 +55,8 @@ class SystemVariables {
   explicit SystemVariables(MachineDataMap machine_data, MachineDataTexts machine_texts = {})
       : values_(std::move(machine_data)), text_values_(std::move(machine_texts)) {}
   void set_view(const ControllerStateView* view) { view_ = view; }
+  // The loader executes its next line (the clock's reads on one line see one time).
+  void begin_line() { ++line_; }
 
   struct ReadResult {
     Value value;
@@ -74,6 +81,7 @@ class SystemVariables {
   MachineDataMap timer_start_;  // running $AC_TIMER[n]: the elapsed time at which it read 0
   std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
   const ControllerStateView* view_ = nullptr;
+  uint64_t line_ = 0;  // lines begun (begin_line)
   mutable uint64_t view_reads_ = 0;
   mutable uint64_t input_reads_ = 0;
   mutable std::string last_input_;
