@@ -36,6 +36,8 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
   last_dynamics_.profile = state_.accel;
   last_dynamics_.group = state_.dynamic_group;
   last_dynamics_.limits = state_.axis_limits;
+  for (size_t i = 0; i < geometry_positioning_feed_.size() && i < profile.axes.size(); ++i)
+    geometry_positioning_feed_[i] = profile.axes[i].pos_velocity_mm_s;
 }
 
 void Interpreter::raise(const BlockContext& ctx, int number, const std::string& detail,
@@ -58,8 +60,20 @@ void Interpreter::execute(const parser::Block& block) {
     apply_modal_save(block.modal_save);
     return;
   }
+  GeometryPositioning mode = GeometryPositioning::None;
+  if (auto moved = geometry_positioning_block(block, mode)) {
+    execute_block(*moved, mode);
+    return;
+  }
+  execute_block(block, GeometryPositioning::None);
+}
+
+void Interpreter::execute_block(const parser::Block& block, GeometryPositioning geometry_positioning) {
   corners_.begin_block();
   BlockContext ctx(block);
+  ctx.geometry_positioning = geometry_positioning;
+  if (geometry_positioning == GeometryPositioning::WithPath)
+    warn_once(ctx, "POS/POSA of a geometry axis in a block with path axes (it moves with the path, at the path feed)", 0);
   ctx.simple = is_simple_block(block);
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
   apply_system_writes(block);
@@ -593,7 +607,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   emit_axis_waits(ctx);
   std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
 
-  if (has_axis || full_circle) {
+  if (ctx.geometry_positioning == GeometryPositioning::Alone) {
+    position_geometry_axes(ctx, std::move(extra));
+  } else if (has_axis || full_circle) {
     const Target programmed = target_position(ctx);
     const Vector3d& target = programmed.machine;
     length_applied_ = programmed.length_after;

@@ -30,6 +30,9 @@
 
 namespace drycut::interp {
 
+// A block's POS/POSA of geometry axes: none, alone (a positioning move) or beside path axes.
+enum class GeometryPositioning : uint8_t { None, Alone, WithPath };
+
 struct InterpreterOptions {
   bool optional_stop_active = false;  // M1 stops only when the operator selected it
 };
@@ -106,6 +109,12 @@ class Interpreter {
   // DIAMON ... DIAMCYCOF, DIAMONA[ax] ... DIAMCHANA[ax], DIAMCHAN, SCC[ax] (interpreter_turning.cpp).
   bool apply_turning_command(BlockContext& ctx, const parser::CommandWord& command);
   void add_positioning(BlockContext& ctx, const parser::AxisWord& word);
+  // POS[X]=.., POSA[Z]=.. of geometry axes: the block with them written as axis words X=.. Z=..
+  // (nullopt when the block has none), so that frames, units and tool length apply as to a path
+  // move; `mode` tells whether the block has path axes of its own besides.
+  std::optional<parser::Block> geometry_positioning_block(const parser::Block& block, GeometryPositioning& mode) const;
+  void position_geometry_axes(BlockContext& ctx, std::vector<ExtraAxisMove> extra);
+  void execute_block(const parser::Block& block, GeometryPositioning geometry_positioning);
   void set_axis_limit(BlockContext& ctx, const parser::AxisWord& word);  // ACC/VELOLIM/JERKLIM[ax]=
   bool names_channel_axis(const std::string& name) const;  // the axis of FA[..], ACC[..] is valid
   void add_spindle_positioning(BlockContext& ctx, const parser::AxisWord& word);
@@ -225,6 +234,7 @@ class Interpreter {
   std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
+  std::array<double, 3> geometry_positioning_feed_{};  // FA[X/Y/Z] (mm/s), else MD32060 of the axis
   // G25 S / G26 S (SD43210 SPIND_MIN_VELO_G25, SD43220 SPIND_MAX_VELO_G26), 0: no limit.
   double spindle_min_rpm_ = 0.0;
   double spindle_max_rpm_ = 0.0;

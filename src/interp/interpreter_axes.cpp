@@ -1,10 +1,11 @@
 // Channel axes beyond X, Y, Z: synchronized axes that move with the path (A=, C=DC(..)),
-// positioning axes on their own interpolators (POS/POSA, SPOS/SPOSA), their feeds (FA, FGROUP)
-// and waits (WAITP/WAITS). The rules are in extra_axes.hpp and docs/axes.md.
+// positioning axes on their own interpolators (POS/POSA, SPOS/SPOSA; POS of X/Y/Z too), their
+// feeds (FA, FGROUP) and waits (WAITP/WAITS). The rules are in extra_axes.hpp and docs/axes.md.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "interp/geometry/line_curve.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
 
@@ -88,9 +89,14 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
     switch (w.kind) {
       case AxisWordKind::AxialFeed: {
         const int i = extra_axes_.index(w.axis);
+        if (const int g = axis_index(w.axis); g >= 0) {  // the feed of POS[X] ...
+          if (!(w.value > 0)) raise(ctx, 14800, "FA[" + w.axis + "] must be > 0", w.column);
+          geometry_positioning_feed_[static_cast<size_t>(g)] = w.value / 60.0 * feed_unit();
+          continue;
+        }
         if (i < 0) {
-          // A geometry axis, an axis letter the profile lacks (as POS[A]) or a spindle
-          // (FA[SPI(1)]: the speed of SPOS): valid, not modelled.
+          // An axis letter the profile lacks (as POS[A]) or a spindle (FA[SPI(1)]: the speed of
+          // SPOS): valid, not modelled.
           if (!names_channel_axis(w.axis)) raise(ctx, 12550, "FA[" + w.axis + "]: not an axis of the channel", w.column);
           warn_once(ctx, "FA[" + w.axis + "] (the feed of a positioning axis or spindle drycut does not simulate)", w.column);
           continue;
@@ -143,13 +149,61 @@ void Interpreter::set_axis_limit(BlockContext& ctx, const AxisWord& w) {
   target[static_cast<size_t>(i)] = static_cast<float>(percent / 100.0);
 }
 
+std::optional<parser::Block> Interpreter::geometry_positioning_block(const parser::Block& block,
+                                                                     GeometryPositioning& mode) const {
+  const auto positions_geometry = [this](const AxisWord& w) {
+    return (w.kind == AxisWordKind::Pos || w.kind == AxisWordKind::PosA) && axis_index(w.axis) >= 0;
+  };
+  if (std::none_of(block.axis_words.begin(), block.axis_words.end(), positions_geometry)) return std::nullopt;
+  const bool alone = std::none_of(block.addresses.begin(), block.addresses.end(), [this](const AddressWord& a) {
+    return axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP";
+  });
+  mode = alone ? GeometryPositioning::Alone : GeometryPositioning::WithPath;
+  parser::Block moved = block;
+  moved.axis_words.clear();
+  for (const AxisWord& w : block.axis_words) {
+    if (positions_geometry(w)) moved.addresses.push_back(AddressWord{w.axis, w.value, w.mode, w.column});
+    else moved.axis_words.push_back(w);
+  }
+  return moved;
+}
+
+void Interpreter::position_geometry_axes(BlockContext& ctx, std::vector<ExtraAxisMove> extra) {
+  // POS/POSA of geometry axes alone (Fundamentals, "Traversing positioning axes"): each axis on
+  // its own interpolator at FA[ax] (else MD32060 POS_AX_VELO), to its end before the block ends.
+  // drycut plans one straight move whose feed lets the slowest axis arrive at its own speed,
+  // without jerk limit (BRISKA) and with an exact stop at the end; POSA (the program going on
+  // meanwhile) is planned as POS.
+  if (spline_.active()) end_spline_run(nullptr);
+  const Target programmed = target_position(ctx);
+  length_applied_ = programmed.length_after;
+  check_limits(ctx, programmed.machine);
+  PathElement e = element_template(ctx, ElementKind::Line);
+  e.curve = std::make_shared<geometry::LineCurve>(position_, programmed.machine);
+  attach_extra_axes(ctx, e, std::move(extra));
+  e.rapid = false;
+  e.label = "POS";
+  double time_s = 0.0;
+  for (size_t i = 0; i < 3; ++i) {
+    const double travel = std::abs(programmed.machine[static_cast<Eigen::Index>(i)] - position_[static_cast<Eigen::Index>(i)]);
+    if (travel <= 0) continue;
+    e.label += " " + profile_.axes[i].name;
+    const double velocity = std::min(geometry_positioning_feed_[i], profile_.axes[i].max_velocity_mm_s);
+    if (velocity > 0) time_s = std::max(time_s, travel / velocity);
+  }
+  e.feed_mm_s = time_s > 0 ? e.curve->length() / time_s : 0.0;
+  e.dynamics.exact_stop_this_block = true;
+  e.dynamics.profile = AccelProfile::Brisk;  // BRISKA, the positioning axes' default (MD32420)
+  position_ = e.curve->end();
+  emit(std::move(e));
+}
+
 void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
   const int k = extra_axes_.index(w.axis);
-  if (k < 0) {
-    if (axis_index(w.axis) < 0 && !is_axis_letter_name(w.axis))
-      raise(ctx, 12550, "POS[" + w.axis + "]: not an axis of the channel", w.column);
+  if (k < 0) {  // geometry axes are moved by position_geometry_axes
+    if (!is_axis_letter_name(w.axis)) raise(ctx, 12550, "POS[" + w.axis + "]: not an axis of the channel", w.column);
     warn_once(ctx, std::string(w.kind == AxisWordKind::Pos ? "POS" : "POSA") + "[" + w.axis +
-                       "] (a positioning move of an axis drycut does not simulate; it does not move)", w.column);
+                       "] (axis " + w.axis + " is not in the machine profile; it does not move)", w.column);
     return;
   }
   const size_t i = static_cast<size_t>(k);

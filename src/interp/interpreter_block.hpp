@@ -137,6 +137,7 @@ struct Interpreter::BlockContext {
   double frc = 0.0;
   bool corner_used = false;  // request_corner took the block's words
   bool simple = false;  // a block the compressor may join: nothing but G1, X/Y/Z and F (compress_rules.cpp)
+  GeometryPositioning geometry_positioning = GeometryPositioning::None;  // POS/POSA of X/Y/Z
 };
 
 
