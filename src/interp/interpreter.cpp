@@ -26,7 +26,8 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       state_(reset_state(profile)),
       tools_(profile),
       position_(profile.start_position),
-      extra_axes_(profile) {
+      extra_axes_(profile),
+      master_spindle_(profile.master_spindle) {
   for (int i = 0; i < kSettableFrames; ++i) {
     settable_components_[static_cast<size_t>(i)] = profile_frame_components(profile, i);
     settable_frames_[static_cast<size_t>(i)] = settable_components_[static_cast<size_t>(i)].frame();
@@ -192,6 +193,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
         if (!axis || axis_index(*axis) < 0)
           raise(ctx, kUnsupported, "SPLINEPATH with axes other than X, Y, Z", c.column);
       }
+    } else if (n == "SETMS") {
+      set_master_spindle(ctx, c);
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
     } else if (n == "RET") {
@@ -308,9 +311,8 @@ void Interpreter::apply_spindle_speed(BlockContext& ctx, const AddressWord& a) {
   // S, or S<n>= the speed of spindle n (Fundamentals, "Spindle speed S"): the master's is S.
   if (ctx.dwell) return;  // G4 S<rev>, G4 S2=<rev>
   if (a.value < 0) raise(ctx, 12160, a.name + " must not be negative", a.column);
-  if (const int spindle = numbered_spindle(a.name); spindle > 0 && spindle != profile_.master_spindle) {
-    warn_once(ctx, "spindle " + std::to_string(spindle) + " (only the master spindle is simulated)", a.column);
-    // Its speed is kept for G4 S<n>= (dwell in that spindle's revolutions).
+  if (const int spindle = numbered_spindle(a.name); spindle > 0 && spindle != master_spindle_) {
+    // Kept for G4 S<n>= (dwell in that spindle's revolutions) and for SETMS(n).
     if (!ctx.speed_limit) other_spindles_[spindle].rpm = a.value;
     return;
   }
@@ -369,12 +371,17 @@ void Interpreter::program_tool(BlockContext& ctx, const std::string& id, uint32_
 
 void Interpreter::apply_m_words(BlockContext& ctx) {
   for (const auto& m : ctx.block.m) {
-    // M<n>=3/4/5/19/70: spindle n. The master spindle (MD20090) is the one drycut simulates;
-    // another spindle's functions are warned and leave the master's state alone.
+    // M<n>=3/4/5/19/70: spindle n. Another spindle than the master keeps its direction (G4
+    // S<n>=, SETMS); its positioning (M<n>=19, M<n>=70) is not simulated.
     const bool spindle_function = (m.code >= 3 && m.code <= 5) || m.code == 19 || m.code == 70;
-    if (m.extension > 0 && m.extension != profile_.master_spindle && spindle_function) {
-      warn_once(ctx, "spindle " + std::to_string(m.extension) + " (only the master spindle is simulated)", m.column);
-      if (m.code >= 3 && m.code <= 5) other_spindles_[m.extension].turning = m.code != 5;
+    if (m.extension > 0 && m.extension != master_spindle_ && spindle_function) {
+      if (m.code >= 3 && m.code <= 5)
+        other_spindles_[m.extension].state = m.code == 3   ? SpindleState::Clockwise
+                                             : m.code == 4 ? SpindleState::CounterClockwise
+                                                           : SpindleState::Stopped;
+      else
+        warn_once(ctx, "M" + std::to_string(m.extension) + "=" + std::to_string(m.code) +
+                           " (positioning of a spindle other than the master is not simulated)", m.column);
       continue;
     }
     switch (m.code) {

@@ -238,12 +238,17 @@ class Interpreter {
   // G25 S / G26 S (SD43210 SPIND_MIN_VELO_G25, SD43220 SPIND_MAX_VELO_G26), 0: no limit.
   double spindle_min_rpm_ = 0.0;
   double spindle_max_rpm_ = 0.0;
-  // Spindles other than the master: not simulated, their programmed speed is kept for G4 S<n>=.
+  // The master spindle (MD20090, SETMS(n)): S, M3/M4/M5, G95, G96 and G4 S refer to it.
+  int master_spindle_ = 1;
+  // Spindles other than the master: their programmed speed and direction are kept (G4 S<n>=,
+  // and SETMS(n) makes one the master with them).
   struct OtherSpindle {
     double rpm = 0.0;
-    bool turning = true;  // false after M<n>=5 (started before the program: assumed turning)
+    SpindleState state = SpindleState::Clockwise;  // Stopped after M<n>=5 (else assumed turning)
+    bool turning() const { return state != SpindleState::Stopped; }
   };
   std::map<int, OtherSpindle> other_spindles_;
+  void set_master_spindle(const BlockContext& ctx, const parser::CommandWord& c);
   // A swivel head's rotation of the tool (TCOABS/TCOFR with swivel_kinematics "head").
   Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
   // On the heap (~46 KB for the 100 frames): an Interpreter on the stack stays small.

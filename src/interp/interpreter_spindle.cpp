@@ -45,10 +45,10 @@ double Interpreter::limit_to_g25_g26(const BlockContext& ctx, double rpm, bool c
 
 double Interpreter::dwell_in_revolutions(const BlockContext& ctx, const AddressWord& s) {
   double rpm = 0.0;
-  if (const int n = numbered_spindle(s.name); n > 0 && n != profile_.master_spindle) {
+  if (const int n = numbered_spindle(s.name); n > 0 && n != master_spindle_) {
     // Another spindle: its programmed speed (S<n>=), which drycut keeps but does not simulate.
     const auto it = other_spindles_.find(n);
-    if (it == other_spindles_.end() || it->second.rpm <= 0 || !it->second.turning) {
+    if (it == other_spindles_.end() || it->second.rpm <= 0 || !it->second.turning()) {
       warn_once(ctx, "G4 " + s.name + "=: the speed of spindle " + std::to_string(n) +
                          " is not known to drycut (dwell taken as 0 s)", s.column);
       return 0.0;
@@ -108,6 +108,29 @@ void Interpreter::speed_from_cutting_speed(const BlockContext& ctx, uint32_t col
   }
   state_.spindle_rpm = std::min(cutting_speed_mm_min(state_.cutting_speed_svc) / (2.0 * std::numbers::pi * radius_mm),
                                 profile_.max_spindle_speed_rpm);
+}
+
+void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::CommandWord& c) {
+  // SETMS(n): spindle n becomes the master; SETMS: the one of MD20090 again (Fundamentals,
+  // "Spindle speed S, direction of rotation"). The old master keeps its speed and direction as
+  // spindle n; the new one brings its own.
+  int n = profile_.master_spindle;
+  if (!c.args.empty()) {
+    const auto* v = std::get_if<double>(&c.args[0]);
+    if (!v || *v < 1 || *v > 99 || *v != std::floor(*v)) {
+      warn_once(ctx, "SETMS: not a spindle number (the master spindle is unchanged)", c.column);
+      return;
+    }
+    n = static_cast<int>(*v);
+  }
+  if (n == master_spindle_) return;
+  other_spindles_[master_spindle_] = OtherSpindle{state_.spindle_rpm, state_.spindle};
+  const auto it = other_spindles_.find(n);
+  const OtherSpindle next = it == other_spindles_.end() ? OtherSpindle{0.0, SpindleState::Stopped} : it->second;
+  if (it != other_spindles_.end()) other_spindles_.erase(it);
+  state_.spindle_rpm = next.rpm;
+  state_.spindle = next.state;
+  master_spindle_ = n;
 }
 
 }  // namespace drycut::interp

@@ -44,7 +44,7 @@ constexpr std::array kCommands{
     CommandEntry{"ORIWKS", N},  CommandEntry{"ORIMKS", N},  CommandEntry{"ORIAXES", N},
     CommandEntry{"ORIVECT", N}, CommandEntry{"CUT2D", E},   CommandEntry{"CUT3DC", N},
     CommandEntry{"SUPA", M},    CommandEntry{"DIAMON", M},  CommandEntry{"DIAMOF", M},
-    CommandEntry{"SPOS", M},    CommandEntry{"SETMS", N},   CommandEntry{"WAITM", N},
+    CommandEntry{"SPOS", M},    CommandEntry{"SETMS", M},   CommandEntry{"WAITM", N},
     CommandEntry{"FGROUP", M},  CommandEntry{"FNORM", E},   CommandEntry{"FLIN", N},
     CommandEntry{"FCUB", N},    CommandEntry{"TCARR", N},   CommandEntry{"TCOABS", M},
     CommandEntry{"TCOFR", M},   CommandEntry{"CPRECON", N}, CommandEntry{"CPRECOF", N},
