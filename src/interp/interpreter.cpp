@@ -1,4 +1,6 @@
 #include "interp/interpreter.hpp"
+
+#include "interp/constant_cutting_speed.hpp"
 #include "interp/interpreter_block.hpp"
 
 #include <cmath>
@@ -110,9 +112,10 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
 }
 
 void Interpreter::apply_g_words(BlockContext& ctx) {
-  // G97 after G96 freezes the speed the spindle has now (an S in the block replaces it later).
-  // G97 freezes the speed at the block start: exact, so no warning about the G96 model.
-  const double frozen_speed = state_.constant_cutting_speed && ctx.block.has_g(97) ? spindle_speed(ctx, false) : -1.0;
+  // G97 (G971, G972, G973) after G96 freezes the speed the spindle has at the block start (an S
+  // in the block replaces it later).
+  const bool freezes = ctx.block.has_g(97) || ctx.block.has_g(971) || ctx.block.has_g(972) || ctx.block.has_g(973);
+  const double frozen_speed = state_.constant_cutting_speed && freezes ? spindle_speed(ctx) : -1.0;
   int group1 = -1;
   for (const auto& g : ctx.block.g) {
     const int code = g.code;
@@ -431,11 +434,12 @@ double Interpreter::feed_unit() const {
 }
 
 double Interpreter::cutting_speed_mm_min(double speed) const {
-  // G96 S and SVC are m/min, ft/min on a machine whose base system is inch.
-  return speed * 1000.0 * (profile_.base_unit_inch ? 0.3048 : 1.0);
+  // G96 S and SVC are m/min, ft/min under G70/G700 (Fundamentals, G96: "m/min (for G71/G710)
+  // or ft/min (for G70/G700)").
+  return speed * 1000.0 * (state_.inch ? 0.3048 : 1.0);
 }
 
-double Interpreter::spindle_speed(const BlockContext& ctx, bool times_motion) {
+double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d* chord) {
   // G331/G332 tap with the spindle in position control (SPOS before, no M3/M4): the speed is
   // the S programmed, the direction the sign of the lead (Fundamentals, "Tapping without
   // compensating chuck (G331, G332)").
@@ -455,15 +459,22 @@ double Interpreter::spindle_speed(const BlockContext& ctx, bool times_motion) {
     }
     return rpm;
   }
-  // G96: S is the cutting speed (m/min, ft/min on an inch base) at the tool; the speed follows
-  // the diameter 2|X| (work coordinates; X: the SCC axis) at the block start, limited by LIMS and MD35100.
-  if (times_motion) warn_once(ctx, "G96 constant cutting speed: spindle speed taken at the block start diameter", 0);
+  // G96: S is the cutting speed at the tool; the speed follows the diameter 2|x| (work
+  // coordinates; x the SCC axis, default the transverse axis of MD20100) over the block, limited
+  // by LIMS, G26 and MD35100 above and G25 below (constant_cutting_speed.hpp).
   const double speed_mm_min = cutting_speed_mm_min(state_.spindle_rpm);
-  // The radius is the position of the SCC axis (default: the transverse axis of MD20100, else X).
-  const double diameter = 2.0 * std::abs(block_frame(ctx).to_inner(position_ - length_applied_)[state_.cutting_speed_axis]);
-  double rpm = diameter > 1e-9 ? speed_mm_min / (std::numbers::pi * diameter) : profile_.max_spindle_speed_rpm;
-  if (state_.spindle_speed_limit > 0) rpm = std::min(rpm, state_.spindle_speed_limit);
-  return std::min(limit_to_g25_g26(ctx, rpm, true), profile_.max_spindle_speed_rpm);
+  const Frame& frame = block_frame(ctx);
+  const Eigen::Vector3d tip = position_ - length_applied_;
+  const double x0 = frame.to_inner(tip)[state_.cutting_speed_axis];
+  const double x1 = chord ? frame.to_inner(tip + *chord)[state_.cutting_speed_axis] : x0;
+  double max_rpm = profile_.max_spindle_speed_rpm;
+  if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
+  if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
+  for (const double x : {x0, x1}) {  // the G25/G26 warnings where the ends of the block need them
+    const double rpm = std::abs(x) > 1e-9 ? speed_mm_min / (std::numbers::pi * 2.0 * std::abs(x)) : max_rpm;
+    limit_to_g25_g26(ctx, state_.spindle_speed_limit > 0 ? std::min(rpm, state_.spindle_speed_limit) : rpm, true);
+  }
+  return constant_cutting_speed_rpm(speed_mm_min, x0, x1, spindle_min_rpm_, max_rpm);
 }
 
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {

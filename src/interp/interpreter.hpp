@@ -150,8 +150,8 @@ class Interpreter {
   // SVC=: the spindle speed from a cutting speed and the active tool radius (interpreter_spindle.cpp).
   void apply_cutting_speed(BlockContext& ctx, const parser::AddressWord& svc);
   void speed_from_cutting_speed(const BlockContext& ctx, uint32_t column);  // S from SVC and the edge radius
-  // `times_motion`: the speed times a block (G95, threads, dwell S), so the G96 model is warned.
-  double spindle_speed(const BlockContext& ctx, bool times_motion = true);
+  // `chord`: the block's move (end - start), over which G96 follows the diameter.
+  double spindle_speed(const BlockContext& ctx, const Eigen::Vector3d* chord = nullptr);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
   double cutting_speed_mm_min(double speed) const;  // G96 S / SVC (m/min or ft/min) in mm/min
   double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)

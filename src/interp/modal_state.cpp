@@ -15,7 +15,7 @@ void set_feed_mode(ModalState& s, FeedMode mode) {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 67> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 72> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -41,6 +41,13 @@ constexpr std::array<std::pair<std::string_view, Setter>, 67> kCodes{{
     // G96 switches feed per revolution on with constant cutting speed; G97 keeps G95.
     {"G96", [](ModalState& s) { s.constant_cutting_speed = true; set_feed_mode(s, FeedMode::PerRevolution); }},
     {"G97", [](ModalState& s) { s.constant_cutting_speed = false; }},
+    // Fundamentals, "Constant cutting rate": G961/G971 the same with linear feed (as G94),
+    // G962/G972 keeping the feed type, G973 as G97 without the spindle speed limitation LIMS.
+    {"G961", [](ModalState& s) { s.constant_cutting_speed = true; set_feed_mode(s, FeedMode::PerMinute); }},
+    {"G962", [](ModalState& s) { s.constant_cutting_speed = true; }},
+    {"G971", [](ModalState& s) { s.constant_cutting_speed = false; set_feed_mode(s, FeedMode::PerMinute); }},
+    {"G972", [](ModalState& s) { s.constant_cutting_speed = false; }},
+    {"G973", [](ModalState& s) { s.constant_cutting_speed = false; }},
     {"G33", [](ModalState& s) { s.motion = MotionMode::Thread; }},
     {"G34", [](ModalState& s) { s.motion = MotionMode::ThreadIncreasing; }},
     {"G35", [](ModalState& s) { s.motion = MotionMode::ThreadDecreasing; }},

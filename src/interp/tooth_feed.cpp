@@ -50,7 +50,8 @@ const ModalState& Interpreter::feed_state(const BlockContext& ctx, ModalState& s
 
 double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord) {
   ModalState scratch;
-  const FeedResult feed = path_feed(feed_state(ctx, scratch), spindle_speed(ctx), length_mm, chord, ctx.lead_change_mm);
+  const FeedResult feed = path_feed(feed_state(ctx, scratch), spindle_speed(ctx, &chord), length_mm, chord,
+                                     ctx.lead_change_mm);
   if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
   return feed.mm_s;
 }

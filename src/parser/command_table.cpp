@@ -287,6 +287,7 @@ Support g_code_support(int64_t g) {
     case 500: case 601: case 602: case 603: case 641: case 642: case 643: case 644: case 645:
     case 700: case 710:
     case 33: case 34: case 35: case 63: case 93: case 96: case 97: case 331: case 332:  // threads, feed types
+    case 961: case 962: case 971: case 972: case 973:  // G96/G97 with the feed type linear or kept
       return M;
     case 25: case 26:  // spindle speed limits (G25/G26 S); with axis words: working area, warned
       return M;
@@ -296,8 +297,7 @@ Support g_code_support(int64_t g) {
     case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:
     case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
     case 817: case 818: case 819: case 820: case 821: case 822: case 823: case 824: case 825:
-    case 826: case 827: case 828: case 829: case 931: case 942: case 952: case 961: case 962:
-    case 971: case 972: case 973:
+    case 826: case 827: case 828: case 829: case 931: case 942: case 952:
       return N;
     default:
       if (g >= 505 && g <= 599) return M;  // settable zero offsets

@@ -141,10 +141,12 @@ TEST(Feeds, TappingAndSpindleRampDwells) {
 }
 
 TEST(Feeds, ConstantCuttingSpeedFollowsTheDiameter) {
-  // G96 S200 (m/min) at X20: diameter 40 mm, n = 200000/(40π) = 1591.5 rev/min; F0.1 mm/rev.
+  // G96 S200 (m/min) from X20 to X30: n = 200000/(2π r); the block's time at F0.1 mm/rev is
+  // ∫ dr / (0.1 n) = 2π (30² − 20²) / (2 · 200000 · 0.1) min, so its one feed is 10 mm over that.
   auto r = run_program("S1 M3\nG0 X20\nG96 S200\nG1 X30 F0.1\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
-  EXPECT_NEAR(r->sink.motions()[1].feed_mm_s, 0.1 * 200000 / (40 * std::numbers::pi) / 60, 1e-9);
+  const double minutes = 2 * std::numbers::pi * (30.0 * 30 - 20.0 * 20) / (2 * 200000 * 0.1);
+  EXPECT_NEAR(r->sink.motions()[1].feed_mm_s, 10.0 / (minutes * 60), 1e-9);
   // LIMS=1000 caps it: 0.1 · 1000 / 60 mm/s.
   auto capped = run_program("S1 M3\nG0 X20\nG96 S200 LIMS=1000\nG1 X30 F0.1\nM30\n");
   ASSERT_FALSE(capped->alarm) << capped->alarm->format();

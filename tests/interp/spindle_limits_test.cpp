@@ -1,5 +1,6 @@
 // G25 S / G26 S spindle speed limits and G4 S<n>= (dwell in revolutions of spindle n). Every
 // expected value is worked out in the comment beside it (docs/controller-state.md).
+#include <numbers>
 #include <string>
 
 #include "interp_test_support.hpp"
@@ -43,12 +44,15 @@ TEST(SpindleLimits, TheSOfTheLimitBlockIsNoSpeed) {
 }
 
 TEST(SpindleLimits, G26LimitsTheConstantCuttingSpeed) {
-  // G96 S200 at X10 (diameter 20): 200000/(pi*20) = 3183 rev/min, limited by G26 S2000:
-  // F0.1 -> 200 mm/min = 10/3 mm/s.
+  // G96 S200 from X10 (diameter 20: 200000/(pi*20) = 3183 rev/min) to X20, limited by G26
+  // S2000 up to r_c = 200000/(2pi*2000) = 15.9 mm: ∫ dr/n = (r_c - 10)/2000 + pi(20² - r_c²)/200000
+  // min per mm of radius; the block's one feed (F0.1) gives it that time.
   auto r = run_program("G0 X10\nG26 S2000\nS500 M3\nG96 S200\nG1 X20 F0.1\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   auto m = r->sink.motions();
-  EXPECT_NEAR(m[1].feed_mm_s, 10.0 / 3.0, 1e-12);
+  const double r_c = 200000 / (2 * std::numbers::pi * 2000);
+  const double per_rev = (r_c - 10) / 2000 + std::numbers::pi * (20.0 * 20 - r_c * r_c) / 200000;
+  EXPECT_NEAR(m[1].feed_mm_s, 0.1 * (10 / per_rev) / 60, 1e-12);
   EXPECT_EQ(warnings_with(*r, 990013, "G96 spindle speed above the G26 limit"), 1u);
 }
 
