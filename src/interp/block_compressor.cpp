@@ -103,8 +103,12 @@ void BlockCompressor::flush(bool carry) {
   spans_.clear();
   geometry::CompressorFitOptions options = fit_options(profile_, run_mode_);
   // CTOL= / ATOL[ax]= of the program replace the contour / axis tolerances (PGA "CTOL, OTOL,
-  // ATOL"); a block that programs them is not simple, so a run shares its first block's.
-  if (run_tolerances_.ctol_mm > 0) options.contour_tol_mm = run_tolerances_.ctol_mm;
+  // ATOL"); a block that programs them is not simple, so a run shares its first block's. A
+  // programmed CTOL holds whatever tolerance set MD20482 selects, with priority over ATOL.
+  if (run_tolerances_.ctol_mm > 0) {
+    options.contour_tol_mm = run_tolerances_.ctol_mm;
+    options.contour_tolerance = true;
+  }
   for (int i = 0; i < 3; ++i)
     if (run_tolerances_.atol_mm[i] > 0) options.axis_tol_mm[i] = run_tolerances_.atol_mm[i];
   spans_ = geometry::fit_compressed_run(points_, options, start_tangent_);

@@ -114,7 +114,9 @@ CornerSmoothing::Tolerance CornerSmoothing::tolerance(const PathElement& a, cons
     return t;
   }
   const double g0 = rapid ? data.g0_tolerance_factor : 1.0;
-  t.kind = source == 1 || source == 3 ? Tolerance::Contour : Tolerance::Axes;
+  // A programmed CTOL holds for every smoothing but G641/G644 and has priority over ATOL (Job
+  // Planning, "CTOL, OTOL, ATOL"), whatever tolerance MD20480 selects for the machine data.
+  t.kind = source == 1 || source == 3 || r.ctol_mm >= 0 ? Tolerance::Contour : Tolerance::Axes;
   t.contour = (r.ctol_mm >= 0 ? r.ctol_mm : data.contur_tol_mm) * g0;
   for (int i = 0; i < 3; ++i)
     t.axes[i] = (r.atol_mm[i] >= 0 ? r.atol_mm[i] : profile_.axes[static_cast<size_t>(i)].compress_pos_tol_mm) * g0;

@@ -93,5 +93,25 @@ TEST(BlockCompressor, CtolReplacesTheContourToleranceOfTheRuns) {
   EXPECT_DOUBLE_EQ(largest(reset), largest(data));
 }
 
+TEST(BlockCompressor, CtolHoldsUnderTheAxisToleranceMode) {
+  // MD20482 units digit 0: the axis tolerances MD33100 (0.1 mm here) apply to the runs; a
+  // programmed CTOL holds anyway, before ATOL (Job Planning, "CTOL, OTOL, ATOL").
+  auto p = testing::test_profile();
+  p.compressor.mode = 0;
+  for (auto& axis : p.axes) axis.compress_pos_tol_mm = 0.1;
+  std::string wave;
+  for (int i = 1; i <= 200; ++i)
+    wave += "G1 X" + std::to_string(0.5 * i) + " Y" + std::to_string(0.3 * std::sin(0.7 * i)) + "\n";
+  const auto largest = [](const std::vector<PathElement>& m) {
+    double d = 0;
+    for (const auto& e : m) d = std::max(d, e.compressed_blocks > 0 ? e.compress_deviation_mm : 0.0);
+    return d;
+  };
+  const auto data = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + wave + "M30\n", p);
+  const auto ctol = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\nCTOL=0.002 ATOL[X]=0.05 ATOL[Y]=0.05\n" + wave + "M30\n", p);
+  EXPECT_GT(largest(data), 0.002);
+  EXPECT_LE(largest(ctol), 0.002 + 1e-12);
+}
+
 }  // namespace
 }  // namespace drycut::interp

@@ -217,6 +217,22 @@ TEST(CornerSmoothing, CtolAndAtolOverrideTheDataAndNegativeRestoresThem) {
   EXPECT_NEAR(a.out[2].smoothing_deviation_mm, 0.01 * std::sqrt(2.0), 1e-12);  // d = 0.04
 }
 
+TEST(CornerSmoothing, ProgrammedCtolHoldsUnderTheAxisToleranceModeAndBeforeAtol) {
+  // MD20480 = 0 (the test profile): the machine data's tolerance is MD33100 per axis (0.1 mm:
+  // d = 0.1 at a right angle, deviation 0.1·√2). A programmed CTOL holds for G642 whatever
+  // MD20480 selects and has priority over ATOL (Job Planning, "CTOL, OTOL, ATOL"): BRISK, so the
+  // rounding's curvature does not hold it back, deviation 0.02 at both corners.
+  const auto p = testing::test_profile();
+  const std::string corner = "G1 X10\nY10\nX0\nM30\n";
+  const auto data = smoothed("G0 X0 Y0 Z0\nG642 BRISK F1000\n" + corner, p);
+  ASSERT_EQ(labels(data.out), (std::vector<std::string>{"G0", "G1", "G642", "G1", "G642", "G1"}));
+  EXPECT_NEAR(data.out[2].smoothing_deviation_mm, 0.1 * std::sqrt(2.0), 1e-12);
+  const auto ctol = smoothed("G0 X0 Y0 Z0\nG642 BRISK F1000\nCTOL=0.02 ATOL[X]=0.05 ATOL[Y]=0.05\n" + corner, p);
+  ASSERT_EQ(labels(ctol.out), (std::vector<std::string>{"G0", "G1", "G642", "G1", "G642", "G1"}));
+  EXPECT_NEAR(ctol.out[2].smoothing_deviation_mm, 0.02, 1e-12);
+  EXPECT_NEAR(ctol.out[4].smoothing_deviation_mm, 0.02, 1e-12);
+}
+
 // OTOL= acts only under an orientation transformation (not modelled, warned where selected):
 // accepted silently. G644 is planned as G64 and says so.
 TEST(CornerSmoothing, ToleranceWordsAreModelledAndOnlyG644Warns) {
