@@ -166,13 +166,8 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   // test ($P_ISTEST), no dry-run feed ($P_DRYRUN), not the control's own simulation ($P_SIM).
   // Macros read them to skip moves in those modes (Job Planning, system variables list).
   if (n == "$P_SEARCH" || n == "$P_ISTEST" || n == "$P_DRYRUN" || n == "$P_SIM") return Value(0.0);
-  // Whole frames, to be kept in a FRAME variable and written back ($P_PFRAME=SAVED).
-  const double unit = s.inch ? 25.4 : 1.0;
-  if (n == "$P_PFRAME" && indices.empty()) return frame_value(s.frames.programmable(), unit);
-  if (n == "$P_UIFR" && indices.size() == 1 && indices[0].is_number() && indices[0].number >= 0 &&
-      indices[0].number < kSettableFrames && indices[0].number == std::trunc(indices[0].number))
-    return frame_value(interpreter_.settable_frame(static_cast<int>(indices[0].number)), unit);
-  return std::nullopt;
+  // Frames, whole (to be kept in a FRAME variable and written back: $P_PFRAME=SAVED) or by component.
+  return frame_variable(n, indices);
 }
 
 }  // namespace drycut::interp

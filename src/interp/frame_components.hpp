@@ -39,6 +39,8 @@ struct FrameComponents {
   // A whole frame from frame functions' text ("CTRANS(X,10,Y,5):CROT(Z,30)"); `unit` converts
   // lengths to mm. Returns an error text, empty on success.
   std::string assign(std::string_view description, double unit);
+  // A chain whose order the components cannot hold: the frame is known only as a product.
+  bool composed() const { return composed_.has_value(); }
 
  private:
   // One function "CROT(Z,30)"; rank: 0 translation, 1 rotation, 2 scale, 3 mirror.

@@ -4,6 +4,7 @@
 #include "interp/interpreter_block.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <optional>
 
@@ -35,6 +36,9 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
     settable_frames_[static_cast<size_t>(i)] = settable_components_[static_cast<size_t>(i)].frame();
     settable_defined_[static_cast<size_t>(i)] = profile_has_settable_frame(profile, i);
   }
+  if (state_.work_offset.size() > 1)  // the frame selected at reset ($P_IFRAME's components)
+    if (const int index = settable_frame_index(std::atoi(state_.work_offset.c_str() + 1)); index >= 0)
+      active_settable_components_ = settable_components_[static_cast<size_t>(index)];
   last_dynamics_.transition = state_.transition;
   last_dynamics_.profile = state_.accel;
   last_dynamics_.group = state_.dynamic_group;

@@ -53,6 +53,7 @@ class Interpreter {
   // when the frame is next selected, as on the control; other indices are ignored.
   void set_settable_frame(int index, const Frame& frame);
   const Frame& settable_frame(int index) const { return settable_frames_.at(static_cast<size_t>(index)); }
+  const FrameComponents& settable_components(int index) const { return settable_components_.at(static_cast<size_t>(index)); }
   // $P_PFRAME = frame: replaces the programmable frame at once.
   void set_programmable_frame(const Frame& frame);
   // The frame a block without G53 maps with (settable * programmable): e.g. the machine direction
@@ -255,6 +256,7 @@ class Interpreter {
   std::vector<Frame> settable_frames_ = std::vector<Frame>(kSettableFrames);  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};
   std::vector<FrameComponents> settable_components_ = std::vector<FrameComponents>(kSettableFrames);  // $P_UIFR[n, ax, TR]
+  FrameComponents active_settable_components_;  // $P_IFRAME: the selected one's, or as written
 };
 
 }  // namespace drycut::interp

@@ -58,6 +58,7 @@ void Interpreter::select_settable_frame(const BlockContext& ctx, int code, uint3
   const int index = settable_frame_index(code);
   state_.work_offset = settable_frame_name(index);
   state_.frames.set_settable(settable_frames_[static_cast<size_t>(index)]);
+  active_settable_components_ = settable_components_[static_cast<size_t>(index)];
   if (index != 0 && !settable_defined_[static_cast<size_t>(index)])
     warn_once(ctx, state_.work_offset + " has no offset in the machine profile; zero used", column);
 }

@@ -1,7 +1,8 @@
 // `$` system variables the program writes and the interpreter models: tool data $TC_DP3
 // (length), $TC_DP6 (radius) and $TC_DPNT (number of teeth) of tool t, edge d; settable frames $P_UIFR[n] (whole, from a
-// frame function, or by component $P_UIFR[n, X, TR]; effective when next selected) and the
-// programmable frame $P_PFRAME (at once) — frame_components.hpp. Other frame writes ($P_BFRAME,
+// frame function, or by component $P_UIFR[n, X, TR]; effective when next selected), the active
+// settable frame $P_IFRAME (whole or by component, at once) and the programmable frame
+// $P_PFRAME (at once) — frame_components.hpp. Other frame writes ($P_BFRAME,
 // component writes of $P_PFRAME, chained frame expressions) warn. Other writes were kept by the
 // loader (later reads see them) and change nothing drycut times.
 #include "interp/interpreter.hpp"
@@ -38,7 +39,9 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
 
 bool Interpreter::write_frame_variable(const parser::Block& block, const parser::SystemWrite& w) {
   const bool settable = w.name == "$P_UIFR";
-  if (!settable && w.name != "$P_PFRAME") return false;
+  // $P_IFRAME: the active settable frame, in force at once (the table entry stays as it is).
+  const bool active = w.name == "$P_IFRAME";
+  if (!settable && !active && w.name != "$P_PFRAME") return false;
   const size_t first = settable ? 1 : 0;  // $P_UIFR[n, ...]: n first
   if (w.indices.size() != first && w.indices.size() != first + 2) return false;
   int n = 0;
@@ -46,9 +49,11 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
     if (!w.indices[0].is_number() || !(w.indices[0].number >= 0 && w.indices[0].number < kSettableFrames)) return false;
     n = static_cast<int>(w.indices[0].number);
   }
-  FrameComponents components = settable ? settable_components_[static_cast<size_t>(n)] : FrameComponents{};
+  FrameComponents components = settable ? settable_components_[static_cast<size_t>(n)]
+                               : active ? active_settable_components_
+                                        : FrameComponents{};
   if (w.indices.size() == first + 2) {  // [.., axis, component] = value
-    if (!settable || !w.value.is_number()) return false;  // $P_PFRAME components: not kept as components
+    if (!(settable || active) || !w.value.is_number()) return false;  // $P_PFRAME components: not kept as components
     const int axis = detail::axis_index(w.indices[first].text);
     const std::string& component = w.indices[first + 1].text;
     const bool length = component == "TR" || component == "FI";
@@ -69,6 +74,9 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
   if (settable) {
     settable_components_[static_cast<size_t>(n)] = components;
     set_settable_frame(n, frame);
+  } else if (active) {
+    active_settable_components_ = components;
+    state_.frames.set_settable(frame);
   } else {
     set_programmable_frame(frame);
   }

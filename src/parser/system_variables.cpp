@@ -80,6 +80,8 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     ++view_reads_;
     if (auto v = view_->read_system_variable(name, indices)) return {*v, false};
   }
+  // A frame the program wrote and the interpreter does not keep reads back as written.
+  if (auto it = frames_.find(key); it != frames_.end()) return {it->second, false};
   if (c == SystemVariableClass::InputOutput) return {Value(0.0), false};
   // The loader alone (no interpreter behind it) reads state as 0, silently.
   if (!view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) return {Value(0.0), false};
@@ -99,8 +101,21 @@ void SystemVariables::write(std::string_view name, std::span<const Value> indice
     }
     return;
   }
+  if (v.kind == ValueKind::Frame) {
+    // Frames go to the interpreter (Block::system_writes), which answers later reads of those it
+    // keeps; a read must never see the frame as a text (alarm 12150 on `_FR=$P_PFRAME`).
+    texts_.erase(key);
+    written_.erase(key);
+    // Components written before belong to the old frame ("$P_UIFR[1]" -> "$P_UIFR[1,X,TR]").
+    const std::string components = key.back() == ']' ? key.substr(0, key.size() - 1) + "," : key + "[";
+    for (auto it = written_.lower_bound(components); it != written_.end() && it->first.rfind(components, 0) == 0;)
+      it = written_.erase(it);
+    frames_[std::move(key)] = v;
+    return;
+  }
   if (v.is_number()) {
     texts_.erase(key);
+    frames_.erase(key);
     written_[std::move(key)] = v.number;
   } else {
     written_.erase(key);
@@ -118,6 +133,10 @@ void SystemVariables::append_state(std::string& out) const {
   for (const auto& [k, v] : written_) {
     out += k;
     out.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  for (const auto& [k, v] : frames_) {
+    out += k;
+    out += v.text;
   }
   for (const auto& [k, v] : texts_) {
     out += k;

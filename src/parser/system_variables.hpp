@@ -80,6 +80,7 @@ class SystemVariables {
   MachineDataMap written_;                                  // numbers written by the program
   MachineDataMap timer_start_;  // running $AC_TIMER[n]: the elapsed time at which it read 0
   std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
+  std::map<std::string, Value, std::less<>> frames_;        // frames written by the program
   const ControllerStateView* view_ = nullptr;
   uint64_t line_ = 0;  // lines begun (begin_line)
   mutable uint64_t view_reads_ = 0;

@@ -1,0 +1,99 @@
+// Frame system variables a program reads (Job Planning and Function Manual K2, "Frames":
+// current frames and the frame table): whole frames ($P_PFRAME, $P_UIFR[n], $P_IFRAME,
+// $P_ACTFRAME ...) as a FRAME value, and their components [axis, TR|FI|RT|SC|MI] as numbers.
+//
+// drycut keeps the settable frames (by components), the programmable frame and their product;
+// it has no basic frames and no system frames, so every other frame variable ($P_BFRAME,
+// $P_UBFR, $P_CHBFR[n], $P_NCBFRAME[n], $P_SETFRAME, $P_TOOLFRAME, $P_CYCFRAME ...: names of the
+// $P_ family that end in FRAME or FR) reads as the null frame, as an unconfigured frame does on
+// the control. Components of a frame drycut keeps only as a matrix (the programmable frame, the
+// active or total frame) are taken from it: TR its translation (the outermost component), FI 0,
+// SC the length of each column, RT the RPY angles of what remains (Rz·Ry·Rx, as ROT), MI 1 where
+// a single mirror makes the determinant negative on that axis' column sign.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "interp/controller_state_view.hpp"
+#include "interp/frame_components.hpp"
+#include "interp/interpreter_block.hpp"
+
+namespace drycut::interp {
+namespace {
+
+using parser::Value;
+
+bool is_frame_name(std::string_view n) {
+  if (n.rfind("$P_", 0) != 0) return false;
+  return n.ends_with("FRAME") || n.ends_with("FR");
+}
+
+// Indices that select the frame itself (before [axis, component]).
+size_t frame_index_count(std::string_view n) {
+  return n == "$P_UIFR" || n == "$P_CHBFR" || n == "$P_NCBFR" || n == "$P_CHBFRAME" || n == "$P_NCBFRAME" ? 1 : 0;
+}
+
+std::optional<double> component_of_matrix(const Frame& frame, int axis, std::string_view c, double unit) {
+  const Eigen::Matrix3d& l = frame.linear();
+  if (c == "TR") return frame.offset()[axis] / unit;
+  if (c == "FI") return 0.0;
+  Eigen::Vector3d scale(l.col(0).norm(), l.col(1).norm(), l.col(2).norm());
+  if (c == "SC") return scale[axis];
+  Eigen::Matrix3d r = l;
+  for (int i = 0; i < 3; ++i) r.col(i) /= scale[i];
+  if (c == "MI") return r.determinant() < 0 && r(axis, axis) < 0 ? 1.0 : 0.0;
+  if (c == "RT" && r.determinant() > 0) {
+    const double deg = 180.0 / std::numbers::pi;
+    const Eigen::Vector3d rpy(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
+                              std::atan2(r(1, 0), r(0, 0)));
+    return rpy[axis] * deg;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> component_of(const FrameComponents& f, int axis, std::string_view c, double unit) {
+  if (c == "TR") return f.translation[axis] / unit;
+  if (c == "FI") return f.fine[axis] / unit;
+  if (c == "RT") return f.rotation_deg[axis];
+  if (c == "SC") return f.scale[axis];
+  if (c == "MI") return f.mirror[static_cast<size_t>(axis)] ? 1.0 : 0.0;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Value> InterpreterStateView::frame_variable(std::string_view n, std::span<const Value> indices) const {
+  if (!is_frame_name(n)) return std::nullopt;
+  const size_t first = frame_index_count(n);
+  if (indices.size() != first && indices.size() != first + 2) return std::nullopt;
+  const ModalState& s = interpreter_.state();
+  const double unit = s.inch ? 25.4 : 1.0;
+  int settable = -1;
+  Frame frame;  // the null frame for every frame drycut does not keep
+  if (n == "$P_UIFR") {
+    const Value& i = indices[0];
+    if (!i.is_number() || !(i.number >= 0 && i.number < kSettableFrames) || i.number != std::trunc(i.number))
+      return std::nullopt;
+    settable = static_cast<int>(i.number);
+    frame = interpreter_.settable_frame(settable);
+  } else if (n == "$P_PFRAME") {
+    frame = s.frames.programmable();
+  } else if (n == "$P_IFRAME") {
+    frame = s.frames.settable();
+  } else if (n == "$P_ACTFRAME") {
+    frame = s.frames.total(false);
+  }
+  if (indices.size() == first) return frame_value(frame, unit);
+  const Value& axis_word = indices[first];
+  const Value& component = indices[first + 1];
+  const int axis = detail::axis_index(axis_word.text);
+  if (axis < 0) return std::nullopt;
+  if (settable >= 0) {
+    const FrameComponents& c = interpreter_.settable_components(settable);
+    if (!c.composed()) return parser::Value(*component_of(c, axis, component.text, unit));
+  }
+  if (auto v = component_of_matrix(frame, axis, component.text, unit)) return Value(*v);
+  return std::nullopt;
+}
+
+}  // namespace drycut::interp
