@@ -357,6 +357,28 @@ bool LineParser::parse_statement(ParsedLine& out) {
     pos_ = tokens_.size() - 1;  // the parameter types declare nothing drycut needs
     return true;
   }
+  // REDEF name attributes (Job Planning, "Redefinition of system variables, user variables and
+  // NC language commands (REDEF)"), in definition files: new access rights (APR/APW/APRP/APWP/
+  // APRB/APWB, APX for a command), preprocessing stop, initialisation, unit or limits of a
+  // name. Nothing drycut computes changes: a declaration, checked for its form only.
+  if (w == "REDEF") {
+    ++pos_;
+    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "name expected after REDEF");
+    out.statement = Statement::Extern;
+    out.call_name = peek().text;
+    ++pos_;
+    if (peek().kind == TokenKind::LBracket) {  // REDEF $MA_..[AX1]
+      while (peek().kind != TokenKind::RBracket && peek().kind != TokenKind::End) ++pos_;
+      if (peek().kind == TokenKind::RBracket) ++pos_;
+    }
+    while (peek().kind == TokenKind::Name && (is_definition_attribute(peek().text) || peek().text == "APX")) {
+      ++pos_;
+      if (peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) ++pos_;
+      if (peek().kind == TokenKind::Number) ++pos_;
+    }
+    expect_end();
+    return true;
+  }
   if (w == "DEFINE") {
     ++pos_;
     if (peek().kind != TokenKind::Name || !(peek(1).kind == TokenKind::Name && peek(1).text == "AS"))
@@ -503,6 +525,21 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     }
     out.call_name = peek().text;
     ++pos_;
+    // CALL "PROG" BLOCK start TO end: only that section of PROG runs (Job Planning, "Indirect
+    // call of a program part" (CALL BLOCK)).
+    if (peek().kind == TokenKind::Name && peek().text == "BLOCK") {
+      ++pos_;
+      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after BLOCK");
+      out.section_label = peek().text;
+      ++pos_;
+      if (!(peek().kind == TokenKind::Name && peek().text == "TO")) throw LineError(12080, peek().column, "TO expected in CALL BLOCK");
+      ++pos_;
+      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "end label expected after TO");
+      out.end_label = peek().text;
+      ++pos_;
+      expect_end();
+      return true;
+    }
     // Optional passes: CALL "SUB" P3
     int64_t passes = 0;
     std::string_view letters;

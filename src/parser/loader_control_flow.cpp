@@ -309,9 +309,19 @@ void ProgramLoader::execute_case() {
   for (const CaseBranch& b : branches) {
     bool hit = b.value == kNoExpr;
     if (!hit) {
+      // A CHAR holds its code: it equals a one-character constant "B" (and the other way round).
+      const auto code = [](const Value& x) -> std::optional<double> {
+        if (x.is_number()) return x.number;
+        if (x.is_text() && x.text.size() == 1) return static_cast<unsigned char>(x.text[0]);
+        return std::nullopt;
+      };
       const Value c = eval_value(b.value);
-      hit = (c.is_number() && v.is_number()) ? real_equal(c.number, v.number)
-                                             : (!c.is_number() && !v.is_number() && c.text == v.text);
+      if (c.is_number() != v.is_number()) {
+        const auto a = code(c), d = code(v);
+        hit = a && d && real_equal(*a, *d);
+      } else {
+        hit = c.is_number() ? real_equal(c.number, v.number) : c.text == v.text;
+      }
     }
     if (hit) {
       JumpTarget target = b.target;
@@ -445,6 +455,30 @@ bool ProgramLoader::check_endless_loop() {
       return true;
   }
   return false;
+}
+
+void ProgramLoader::run_program_section(const std::string& start_label, const std::string& end_label, uint32_t column) {
+  // CALL "PROG" BLOCK start TO end (Job Planning, "Indirect call of a program part"): the called
+  // program runs from label `start` to the line labelled `end`, inclusive, and returns: a
+  // section run once whose reading goes on at the end of the file.
+  Frame& f = *frames_.back();
+  const auto start = find_label_position(start_label);
+  if (!start) throw LineError(14080, column, start_label + " in " + f.program);
+  const auto end = find_label_position(end_label);
+  if (!end) throw LineError(14080, column, end_label + " in " + f.program);
+  RawLine raw;
+  f.reader.seek(*end);
+  f.reader.next(raw);
+  RepeatSection r;
+  r.start = *start;
+  r.stop_offset = f.reader.tell().offset;
+  while (f.reader.next(raw)) {
+  }
+  r.resume = f.reader.tell();
+  if (r.stop_offset > r.start.offset) {
+    f.repeats.push_back(r);
+    f.reader.seek(r.start);
+  }
 }
 
 bool ProgramLoader::end_of_repeat_section(Frame& f) {

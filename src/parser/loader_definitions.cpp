@@ -154,6 +154,8 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
         execute_def();
       } else if (parsed_.statement == Statement::Define) {
         define_macro(parsed_.call_name, trimmed(parsed_.macro_text));
+      } else if (parsed_.statement == Statement::Extern) {
+        // EXTERN and REDEF declare; REDEF's attributes change nothing drycut computes.
       } else if (!(parsed_.statement == Statement::Words && parsed_.items.size() == 1 &&
                    parsed_.items[0].kind == ItemKind::M)) {
         warn(990002, "only DEF and DEFINE are read from a definition file", 1);

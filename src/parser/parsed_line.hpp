@@ -121,7 +121,8 @@ struct ParsedLine {
   std::string_view def_scope;     // DEF NCK / CHAN (definition files); empty: local
   std::vector<DefEntry> defs;     // DEF entries; PROC parameters
   std::string_view call_name;     // CALL / PROC / EXTERN / DEFINE / REPEAT start name
-  std::string_view end_label;     // REPEAT start end: the end label
+  std::string_view end_label;     // REPEAT start end, CALL "PROG" BLOCK start TO end: the end label
+  std::string_view section_label;  // CALL "PROG" BLOCK start TO end: the start label
   bool repeat_one_block = false;  // REPEATB
   bool proc_save = false;         // PROC ... SAVE
   ExprIndex passes = kNoExpr;     // REPEAT ... P=n
@@ -143,6 +144,7 @@ struct ParsedLine {
     defs.clear();
     call_name = {};
     end_label = {};
+    section_label = {};
     repeat_one_block = false;
     proc_save = false;
     passes = kNoExpr;

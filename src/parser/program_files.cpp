@@ -65,6 +65,10 @@ std::optional<std::filesystem::path> ProgramFiles::find(const ProgramName& progr
     for (const auto& c : candidates)
       if (auto it = files.find(c); it != files.end()) return it->second;
   }
+  // The extension attached with "_" ("SUB_SPF" for SUB.SPF; Function Manual K1, "Executing from
+  // external source": "_" or "." may attach it), when no program has the whole name.
+  if (program.extension.empty() && n.size() > 4 && (ends_with(n, "_SPF") || ends_with(n, "_MPF")))
+    return find(ProgramName{n.substr(0, n.size() - 4), n.substr(n.size() - 3)});
   return std::nullopt;
 }
 

@@ -208,7 +208,10 @@ bool ProgramLoader::execute_line(Block& out) {
           name = v.text;
         } else if (const Variable* v = find_variable(name); v && v->type() == DataType::String && v->rank() == 0)
           name = v->get(v->element({}, parsed_.target.column)).text;
+        const size_t levels = frames_.size();
         call_program(name, passes, parsed_.target.column);
+        if (!parsed_.section_label.empty() && frames_.size() > levels)
+          run_program_section(std::string(parsed_.section_label), std::string(parsed_.end_label), parsed_.target.column);
         return false;
       }
       case Statement::Goto:

@@ -147,6 +147,7 @@ class ProgramLoader {
   void execute_control();
   void execute_case();
   void execute_repeat_section();
+  void run_program_section(const std::string& start_label, const std::string& end_label, uint32_t column);
   bool end_of_repeat_section(Frame& f);
   // At every backward jump: alarm 990004 when the loader is back in a state it had here.
   // After a backward jump: raises 990004 when the loader is back in a state it had (an endless
