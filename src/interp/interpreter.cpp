@@ -421,12 +421,20 @@ void Interpreter::change_tool(BlockContext& ctx) {
     column = word->column;
   }
   std::vector<ToolNotice> notices;
+  const std::optional<std::string> before = tools_.active_tool();
   tools_.change_tool(d, notices);
   report_tool_notices(ctx, notices, column);
   speed_from_cutting_speed(ctx, column);  // SVC: the new tool's radius
   const std::string tool = tools_.active_tool().value_or("0");
-  emit_control(ctx, ElementKind::ToolChange,
-               tools_.change_on_m_code() ? "M" + std::to_string(tools_.change_m_code()) + " " + tool : "T " + tool);
+  const std::string label =
+      tools_.change_on_m_code() ? "M" + std::to_string(tools_.change_m_code()) + " " + tool : "T " + tool;
+  // The tool in the spindle (turret) already: nothing is changed, no change time (CAM posts
+  // repeat T1 M6 for the next operation with the same tool); the motion stops as at a change.
+  if (before && before == tools_.active_tool()) {
+    emit_control(ctx, ElementKind::Dwell, label + " (in the spindle already)");
+    return;
+  }
+  emit_control(ctx, ElementKind::ToolChange, label);
 }
 
 double Interpreter::geometry_unit() const { return state_.inch ? kMmPerInch : 1.0; }

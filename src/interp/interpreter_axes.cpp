@@ -85,7 +85,15 @@ bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWor
 }
 
 void Interpreter::apply_axis_words(BlockContext& ctx) {
-  for (const AxisWord& w : ctx.block.axis_words) {
+  // FA[ax] first: `POS[A]=30 FA[A]=600` moves A at the FA of its own block, wherever it stands.
+  std::vector<const AxisWord*> words;
+  words.reserve(ctx.block.axis_words.size());
+  for (const AxisWord& w : ctx.block.axis_words)
+    if (w.kind == AxisWordKind::AxialFeed) words.push_back(&w);
+  for (const AxisWord& w : ctx.block.axis_words)
+    if (w.kind != AxisWordKind::AxialFeed) words.push_back(&w);
+  for (const AxisWord* word : words) {
+    const AxisWord& w = *word;
     switch (w.kind) {
       case AxisWordKind::AxialFeed: {
         const int i = extra_axes_.index(w.axis);
