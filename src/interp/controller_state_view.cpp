@@ -139,6 +139,8 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_TOOLL") return Value(tools.offsets().length_mm);
   if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
   if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
+  // The master spindle's number (MD20090, SETMS(n)).
+  if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));
   if (n == "$TC_DP3") return number(tool_datum(3, indices));
   if (n == "$TC_DP6") return number(tool_datum(6, indices));
   if (n == "$TC_GETT" && indices.size() == 1) {

@@ -64,6 +64,7 @@ class Interpreter {
   const ToolState& tools() const { return tools_; }
   ToolState& tools() { return tools_; }
   bool ended() const { return ended_; }
+  int master_spindle() const { return master_spindle_; }  // MD20090, SETMS(n)
   // A lower bound of the time so far (path length / feed, dwells, clock polls).
   double nominal_time_s() const { return nominal_time_s_ + clock_wait_s_; }
   // A read of the run clock ($AC_OPERATING_TIME, $AC_TIMER, $A_SECOND ...) on program line `line`

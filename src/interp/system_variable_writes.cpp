@@ -8,6 +8,7 @@
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
 
+#include <cctype>
 #include <cstdlib>
 
 namespace drycut::interp {
@@ -17,8 +18,12 @@ using detail::kNotModelled;
 void Interpreter::apply_system_writes(const parser::Block& block) {
   for (const parser::SystemWrite& w : block.system_writes) {
     const SourceLocation where{block.file ? *block.file : std::string(), block.line, w.column};
-    if (w.name.rfind("$TC_DP", 0) == 0 && w.indices.size() == 2 && w.indices[0].is_number() &&
-        w.indices[1].is_number() && w.value.is_number()) {
+    // $TC_DP<n> and $TC_DPNT; the OEM and monitoring data ($TC_DPC<n>, $TC_DPH ...) are kept by
+    // the loader only.
+    const bool edge_parameter = w.name.rfind("$TC_DP", 0) == 0 &&
+                                (w.name == "$TC_DPNT" || (w.name.size() > 6 && std::isdigit(static_cast<unsigned char>(w.name[6]))));
+    if (edge_parameter && w.indices.size() == 2 && w.indices[0].is_number() && w.indices[1].is_number() &&
+        w.value.is_number()) {
       const int parameter = std::atoi(w.name.c_str() + 6);
       // Indices no int holds are outside the table like any other (and their cast undefined).
       auto index = [](double v) { return v > -2147483648.0 && v < 2147483648.0 ? static_cast<int>(v) : -1; };

@@ -181,6 +181,8 @@ class ProgramLoader::BlockBuilder {
     if (!is_address(item.name)) {
       // OVR=50, CTOL=0.01: valid settings drycut does not model.
       const Support s = command_support(item.name);
+      // TCARR=0 deselects the tool carrier: with none modelled, nothing to say.
+      if (item.name == "TCARR" && item.index_count == 0 && l_.eval(item.expr) == 0) return;
       if (s == Support::NotModelled) {
         l_.warn_not_modelled(not_modelled_assignment(item), item.column);
         return;
