@@ -7,6 +7,8 @@
 
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
+#include "interp/geometry/trimmed_curve.hpp"
+#include "interp/rounding_with_arcs.hpp"
 
 namespace drycut::interp {
 
@@ -35,6 +37,15 @@ bool is_straight(const PathElement& e) {
   // G0/G1 only (a thread or POLY block is a Line element too; its label names it).
   return e.kind == ElementKind::Line && e.curve && e.extra_axes.empty() && (e.label == "G0" || e.label == "G1");
 }
+
+// A circle (G2/G3, CIP, CT) without helical travel or extra axes: RND may round next to it.
+bool is_planar_arc(const PathElement& e) {
+  if (e.kind != ElementKind::Arc || !e.curve || !e.extra_axes.empty()) return false;
+  const auto* arc = dynamic_cast<const geometry::ArcCurve*>(e.curve.get());
+  return arc && std::abs(arc->axial_travel()) < kLengthEps;
+}
+
+bool can_round(const PathElement& e) { return e.corner.kind == ContourCornerKind::Round && is_planar_arc(e); }
 
 }  // namespace
 
@@ -124,9 +135,9 @@ void ContourCorners::consume(PathElement&& element) {
     next_.consume(std::move(element));
     return;
   }
-  if (!is_straight(element)) {
+  if (!is_straight(element) && !can_round(element)) {
     warn(element, std::string(corner_word(element.corner)) + " at the end of a " + element.label +
-                      " block (only between straight blocks modelled: the corner stays sharp)");
+                      " block (modelled between straight blocks, and RND next to circles: the corner stays sharp)");
     element.corner = {};
     next_.consume(std::move(element));
     return;
@@ -145,8 +156,10 @@ bool ContourCorners::insert_corner(PathElement& b) {
     give_up("before a block moving extra axes");
     return true;
   }
-  if (!is_straight(b) || !is_straight(a)) {
-    give_up("before a " + b.label + " block, modelled only between straight G0/G1 blocks");
+  const bool arcs = a.corner.kind == ContourCornerKind::Round && (is_planar_arc(a) || is_planar_arc(b)) &&
+                    (is_straight(a) || is_planar_arc(a)) && (is_straight(b) || is_planar_arc(b));
+  if (!arcs && (!is_straight(b) || !is_straight(a))) {
+    give_up("before a " + b.label + " block, modelled only between straight G0/G1 blocks (RND next to circles too)");
     return true;
   }
   if (b.corner.program_level != a.corner.program_level) {
@@ -156,6 +169,7 @@ bool ContourCorners::insert_corner(PathElement& b) {
   // The manual: no corner across a plane change or after more than three blocks between.
   if (!same_plane(a, b) || blocks_since_ - 1 > kMaxBlocksBetween) return false;
   const geometry::Vec3 n = plane_normal(a.compensation);
+  if (arcs) return insert_rounding_with_arcs(b, n);
   const geometry::Vec3 start = a.curve->start(), corner = a.curve->end(), end = b.curve->end();
   const double la = a.curve->length(), lb = b.curve->length();
   if (la < kLengthEps || lb < kLengthEps) return false;
@@ -204,6 +218,49 @@ bool ContourCorners::insert_corner(PathElement& b) {
   for (auto& e : between_) next_.consume(std::move(e));
   between_.clear();
   b.curve = std::make_shared<geometry::LineCurve>(p2, end);
+  ++inserted_;
+  return true;
+}
+
+bool ContourCorners::insert_rounding_with_arcs(PathElement& b, const geometry::Vec3& n) {
+  PathElement& a = *pending_;
+  for (const PathElement* e : {&a, &b}) {
+    const auto* arc = dynamic_cast<const geometry::ArcCurve*>(e->curve.get());
+    if (arc && std::abs(std::abs(arc->normal().dot(n)) - 1.0) > 1e-9) {
+      give_up("next to a circle outside the working plane");
+      return true;
+    }
+    if (!arc && std::abs((e->curve->end() - e->curve->start()).normalized().dot(n)) > 1e-9) {
+      give_up("between blocks with a component along the plane normal");
+      return true;
+    }
+  }
+  if (a.curve->length() < kLengthEps || b.curve->length() < kLengthEps) return false;
+  const std::optional<CurvedRounding> r = rounding_with_arcs(a.curve, b.curve, a.corner.size_mm, n);
+  if (!r) {
+    // Tangent sides have no corner (silently); a rounding that does not fit is said.
+    const geometry::Vec3 t1 = a.curve->at(a.curve->length()).tangent, t2 = b.curve->at(0).tangent;
+    if (t1.normalized().dot(t2.normalized()) > 1.0 - 1e-12) return false;
+    give_up("does not fit between the blocks (no rounding of that radius touches both)");
+    return true;
+  }
+  PathElement inserted = a;
+  inserted.kind = ElementKind::Arc;
+  inserted.curve = r->curve;
+  inserted.label = corner_word(a.corner);
+  inserted.rapid = b.rapid;
+  inserted.feed_mm_s = b.rapid ? 0.0 : a.corner.feed_mm_s > 0 ? a.corner.feed_mm_s : b.feed_mm_s;
+  inserted.compressible = false;
+  inserted.corner = {};
+  a.dynamics.exact_stop_this_block = false;  // G9 acts at the end of the block, after the corner
+  a.corner = {};
+  a.curve = geometry::trim_curve(a.curve, 0.0, r->end_of_first);
+  next_.consume(std::move(a));
+  pending_.reset();
+  next_.consume(std::move(inserted));
+  for (auto& e : between_) next_.consume(std::move(e));
+  between_.clear();
+  b.curve = geometry::trim_curve(b.curve, r->start_of_second, b.curve->length());
   ++inserted_;
   return true;
 }

@@ -32,8 +32,11 @@
 //   much: drycut takes the largest that fits). Feed: FRC, else FRCM, else the second
 //   block's feed; rapid if the second block is G0. The inserted element carries the first
 //   block's source, dynamics and compensation request; a G9 of the first block moves to it.
-//   Not modelled (warning 990002 naming it, the corner stays sharp): a circle, spline or other
-//   curve on either side, a block moving out of the plane (third-axis component) or moving extra
+//   RND/RNDM next to a circle (line-circle, circle-line, circle-circle in the plane): the
+//   rounding circle tangent to both, rounding_with_arcs.hpp; it is not reduced when too large
+//   (the corner stays sharp, warned).
+//   Not modelled (warning 990002 naming it, the corner stays sharp): CHF/CHR next to a circle, a
+//   spline or other curve on either side, a helix, a block moving out of the plane (third-axis component) or moving extra
 //   axes, a dwell, stop, tool change or positioning between the blocks, the next motion in
 //   another program level, no next motion at all, a reversal (θ = π). Parallel blocks (θ = 0)
 //   have no corner: nothing is inserted, silently.
@@ -79,6 +82,8 @@ class ContourCorners final : public ElementSink {
   void hold(PathElement&& line);
   // Inserts the corner between pending_ and b; false: not modelled here (warned) or no corner.
   bool insert_corner(PathElement& b);
+  // RND next to a circle (rounding_with_arcs.hpp); the same contract as insert_corner.
+  bool insert_rounding_with_arcs(PathElement& b, const geometry::Vec3& n);
   // Hands on pending_ unchanged, then what came after it, with a warning naming why.
   // modal_silent: an RNDM request gives up without a warning (no corner follows).
   void give_up(const std::string& why, bool modal_silent = false);

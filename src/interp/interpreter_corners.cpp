@@ -53,9 +53,12 @@ void Interpreter::request_corner(BlockContext& ctx, PathElement& e) {
   }
   ctx.corner_used = true;
   if (r.kind == ContourCornerKind::None) return;
-  if (state_.motion != MotionMode::Rapid && state_.motion != MotionMode::Linear) {
+  const bool circle = state_.motion == MotionMode::ArcCw || state_.motion == MotionMode::ArcCcw ||
+                      state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
+  if (state_.motion != MotionMode::Rapid && state_.motion != MotionMode::Linear &&
+      !(circle && r.kind == ContourCornerKind::Round)) {
     warn_once(ctx, std::string(corner_word(r)) + " at the end of a " + std::string(motion_mode_name(state_.motion)) +
-                       " block (only between straight G0/G1 blocks modelled: the corner stays sharp)",
+                       " block (modelled between straight G0/G1 blocks, and RND next to circles: the corner stays sharp)",
               ctx.corner_column);
     return;
   }

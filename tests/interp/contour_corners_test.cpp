@@ -140,12 +140,64 @@ TEST(ContourCorners, ValueReducedWhereTheBlockIsTooShort) {
   EXPECT_EQ(r.warnings[0], 990015);
 }
 
+TEST(ContourCorners, RoundingBetweenALineAndACircle) {
+  // Line +Y into C (10, 0), then G3 about O (10, 10), R 10, leaving C along +X: a right turn of
+  // 90°. The rounding (r 2) lies on the right of both: its centre M is 2 off the line, x = 12,
+  // and 12 from O (the inside of the turn is away from O): (12 - 10)² + (y - 10)² = 144,
+  // y = 10 - √140 (the solution nearest C). P1 = (10, y) on the line, P2 = O + 10·(M - O)/12.
+  Corners r = run_corners("G0 X10 Y-10 Z0\nG1 Y0 RND=2 F600\nG3 X20 Y10 CR=10\nM30\n");
+  ASSERT_EQ(r.m.size(), 4u);
+  EXPECT_TRUE(r.warnings.empty());
+  const double y = 10 - std::sqrt(140.0);
+  const Vector3d m(12, y, 0), o(10, 10, 0);
+  const Vector3d p2 = o + 10 * (m - o) / 12;
+  EXPECT_TRUE(near(r.m[1].curve->end(), Vector3d(10, y, 0)));
+  const PathElement& arc = r.m[2];
+  EXPECT_EQ(arc.label, "RND");
+  const auto& circle = dynamic_cast<const geometry::ArcCurve&>(*arc.curve);
+  EXPECT_TRUE(near(circle.centre(), m));
+  EXPECT_NEAR(circle.radius(), 2.0, 1e-12);
+  EXPECT_TRUE(near(arc.curve->end(), p2));
+  EXPECT_TRUE(near(r.m[3].curve->start(), p2));
+  EXPECT_TRUE(near(r.m[3].curve->end(), Vector3d(20, 10, 0)));
+  // Tangent at both joints.
+  for (size_t i = 1; i + 1 < r.m.size(); ++i)
+    EXPECT_TRUE(near(r.m[i].curve->at(r.m[i].curve->length()).tangent, r.m[i + 1].curve->at(0).tangent)) << i;
+}
+
+TEST(ContourCorners, RoundingBetweenTwoCirclesAndFromACircleToALine) {
+  // Invariants of the rounding (any geometry): it has radius r, its centre is r from the line or
+  // R ± r from each circle's centre, and the path stays tangent at both joints.
+  for (const char* text : {"G0 X0 Y0 Z0\nG2 X10 Y0 CR=5 F600 RND=2\nG1 X20\nM30\n",
+                           "G0 X0 Y0 Z0\nG3 X10 Y0 CR=6 F600 RND=1.5\nG3 X20 Y0 CR=6\nM30\n",
+                           "G0 X0 Y0 Z0\nG1 X10 F600 RND=2\nG3 X20 Y0 CR=5\nM30\n"}) {
+    Corners r = run_corners(text);
+    EXPECT_TRUE(r.warnings.empty()) << text;
+    ASSERT_EQ(r.m.size(), 4u) << text;
+    const auto& rounding = dynamic_cast<const geometry::ArcCurve&>(*r.m[2].curve);
+    EXPECT_EQ(r.m[2].label, "RND") << text;
+    for (const size_t side : {size_t{1}, size_t{3}}) {
+      if (const auto* c = dynamic_cast<const geometry::ArcCurve*>(r.m[side].curve.get())) {
+        const double d = (rounding.centre() - c->centre()).norm();
+        EXPECT_NEAR(std::abs(d - c->radius()), rounding.radius(), 1e-9) << text;
+      } else {
+        const Vector3d a = r.m[side].curve->start(), b = r.m[side].curve->end();
+        const Vector3d u = (b - a).normalized();
+        const Vector3d q = rounding.centre() - a;
+        EXPECT_NEAR((q - q.dot(u) * u).norm(), rounding.radius(), 1e-9) << text;
+      }
+    }
+    for (size_t i = 1; i + 1 < r.m.size(); ++i)
+      EXPECT_TRUE(near(r.m[i].curve->at(r.m[i].curve->length()).tangent, r.m[i + 1].curve->at(0).tangent, 1e-9))
+          << text << " joint " << i;
+  }
+}
+
 TEST(ContourCorners, NotModelledCasesKeepTheCornerAndWarn) {
-  // Before a circle; a block with a third-axis component; no following motion.
-  for (const char* text : {"G0 X0 Y0 Z0\nG1 X10 F600 RND=2\nG3 X20 Y0 CR=5\nM30\n",
+  // A chamfer before a circle; a block with a third-axis component; no following motion.
+  for (const char* text : {"G0 X0 Y0 Z0\nG1 X10 F600 CHF=2\nG3 X20 Y0 CR=5\nM30\n",
                            "G0 X0 Y0 Z0\nG1 X10 Z5 F600 RND=2\nY10\nM30\n",
-                           "G0 X0 Y0 Z0\nG1 X10 F600 RND=2\nM30\n",
-                           "G0 X0 Y0 Z0\nG2 X10 Y0 CR=5 F600 RND=2\nG1 Y10\nM30\n"}) {
+                           "G0 X0 Y0 Z0\nG1 X10 F600 RND=2\nM30\n"}) {
     Corners r = run_corners(text);
     ASSERT_FALSE(r.warnings.empty()) << text;
     EXPECT_EQ(r.warnings[0], 990002) << text;
