@@ -199,9 +199,21 @@ bool ContourCorners::insert_corner(PathElement& b) {
   }
   const geometry::Vec3 p1 = g->curve->start(), p2 = g->curve->end();
 
+  PathElement inserted = corner_element(a, b, a.corner.kind == ContourCornerKind::Round ? ElementKind::Arc : ElementKind::Line, g->curve);
+  const bool first_left = (p1 - start).norm() > kLengthEps;
+  if (first_left) a.curve = std::make_shared<geometry::LineCurve>(start, p1);
+  hand_on_corner(first_left, std::move(inserted));
+  b.curve = std::make_shared<geometry::LineCurve>(p2, end);
+  return true;
+}
+
+PathElement ContourCorners::corner_element(PathElement& a, const PathElement& b, ElementKind kind,
+                                           geometry::CurvePtr curve) {
+  // The inserted element: the first block's source, dynamics and compensation; FRC/FRCM or the
+  // second block's feed (rapid after a G0). The first block gives up its request and its G9.
   PathElement inserted = a;
-  inserted.kind = a.corner.kind == ContourCornerKind::Round ? ElementKind::Arc : ElementKind::Line;
-  inserted.curve = g->curve;
+  inserted.kind = kind;
+  inserted.curve = std::move(curve);
   inserted.label = corner_word(a.corner);
   inserted.rapid = b.rapid;
   inserted.feed_mm_s = b.rapid ? 0.0 : a.corner.feed_mm_s > 0 ? a.corner.feed_mm_s : b.feed_mm_s;
@@ -209,17 +221,17 @@ bool ContourCorners::insert_corner(PathElement& b) {
   inserted.corner = {};
   a.dynamics.exact_stop_this_block = false;  // G9 acts at the end of the block, after the corner
   a.corner = {};
-  if ((p1 - start).norm() > kLengthEps) {
-    a.curve = std::make_shared<geometry::LineCurve>(start, p1);
-    next_.consume(std::move(a));
-  }
+  return inserted;
+}
+
+void ContourCorners::hand_on_corner(bool first_left, PathElement&& inserted) {
+  // The (cut) first block if anything is left of it, the corner element, what came between.
+  if (first_left) next_.consume(std::move(*pending_));
   pending_.reset();
   next_.consume(std::move(inserted));
   for (auto& e : between_) next_.consume(std::move(e));
   between_.clear();
-  b.curve = std::make_shared<geometry::LineCurve>(p2, end);
   ++inserted_;
-  return true;
 }
 
 bool ContourCorners::insert_rounding_with_arcs(PathElement& b, const geometry::Vec3& n) {
@@ -244,24 +256,10 @@ bool ContourCorners::insert_rounding_with_arcs(PathElement& b, const geometry::V
     give_up("does not fit between the blocks (no rounding of that radius touches both)");
     return true;
   }
-  PathElement inserted = a;
-  inserted.kind = ElementKind::Arc;
-  inserted.curve = r->curve;
-  inserted.label = corner_word(a.corner);
-  inserted.rapid = b.rapid;
-  inserted.feed_mm_s = b.rapid ? 0.0 : a.corner.feed_mm_s > 0 ? a.corner.feed_mm_s : b.feed_mm_s;
-  inserted.compressible = false;
-  inserted.corner = {};
-  a.dynamics.exact_stop_this_block = false;  // G9 acts at the end of the block, after the corner
-  a.corner = {};
+  PathElement inserted = corner_element(a, b, ElementKind::Arc, r->curve);
   a.curve = geometry::trim_curve(a.curve, 0.0, r->end_of_first);
-  next_.consume(std::move(a));
-  pending_.reset();
-  next_.consume(std::move(inserted));
-  for (auto& e : between_) next_.consume(std::move(e));
-  between_.clear();
+  hand_on_corner(true, std::move(inserted));
   b.curve = geometry::trim_curve(b.curve, r->start_of_second, b.curve->length());
-  ++inserted_;
   return true;
 }
 

@@ -84,6 +84,8 @@ class ContourCorners final : public ElementSink {
   bool insert_corner(PathElement& b);
   // RND next to a circle (rounding_with_arcs.hpp); the same contract as insert_corner.
   bool insert_rounding_with_arcs(PathElement& b, const geometry::Vec3& n);
+  static PathElement corner_element(PathElement& a, const PathElement& b, ElementKind kind, geometry::CurvePtr curve);
+  void hand_on_corner(bool first_left, PathElement&& inserted);
   // Hands on pending_ unchanged, then what came after it, with a warning naming why.
   // modal_silent: an RNDM request gives up without a warning (no corner follows).
   void give_up(const std::string& why, bool modal_silent = false);

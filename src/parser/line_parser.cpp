@@ -457,6 +457,19 @@ bool LineParser::parse_statement(ParsedLine& out) {
   return false;
 }
 
+// "<start label> TO <end label>" of CALL [..] BLOCK, to the end of the line.
+void LineParser::parse_section_labels(std::string_view& start, std::string_view& end) {
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after CALL BLOCK");
+  start = peek().text;
+  ++pos_;
+  if (!(peek().kind == TokenKind::Name && peek().text == "TO")) throw LineError(12080, peek().column, "TO expected in CALL BLOCK");
+  ++pos_;
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "end label expected after TO");
+  end = peek().text;
+  ++pos_;
+  expect_end();
+}
+
 // EXTCALL, PCALL, CALL BLOCK and CALL: true when a call statement was parsed, false when the
 // words go on as an ordinary subprogram call (PCALL), nullopt when `w` starts no call.
 std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) {
@@ -497,17 +510,8 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     out.statement = Statement::RepeatSection;
     out.repeat_one_block = false;
     pos_ += 2;
-    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after CALL BLOCK");
-    out.call_name = peek().text;
     out.target.column = peek().column;
-    ++pos_;
-    if (!(peek().kind == TokenKind::Name && peek().text == "TO"))
-      throw LineError(12080, peek().column, "TO expected in CALL BLOCK");
-    ++pos_;
-    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "end label expected after TO");
-    out.end_label = peek().text;
-    ++pos_;
-    expect_end();
+    parse_section_labels(out.call_name, out.end_label);
     return true;
   }
   if (w == "CALL") {
@@ -529,15 +533,7 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     // call of a program part" (CALL BLOCK)).
     if (peek().kind == TokenKind::Name && peek().text == "BLOCK") {
       ++pos_;
-      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after BLOCK");
-      out.section_label = peek().text;
-      ++pos_;
-      if (!(peek().kind == TokenKind::Name && peek().text == "TO")) throw LineError(12080, peek().column, "TO expected in CALL BLOCK");
-      ++pos_;
-      if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "end label expected after TO");
-      out.end_label = peek().text;
-      ++pos_;
-      expect_end();
+      parse_section_labels(out.section_label, out.end_label);
       return true;
     }
     // Optional passes: CALL "SUB" P3

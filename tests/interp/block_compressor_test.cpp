@@ -71,19 +71,26 @@ TEST(BlockCompressor, ALongRunIsFlushedInWindowsAndStaysTangentContinuous) {
   EXPECT_GE(m.size(), 1u + 5u);  // at least one span per window of 100 points
 }
 
+// 200 short G1 blocks along a wave, and the largest deviation of the compressed spans.
+std::string wave_blocks() {
+  std::string wave;
+  for (int i = 1; i <= 200; ++i)
+    wave += "G1 X" + std::to_string(0.5 * i) + " Y" + std::to_string(0.3 * std::sin(0.7 * i)) + "\n";
+  return wave;
+}
+
+double largest(const std::vector<PathElement>& m) {
+  double d = 0;
+  for (const auto& e : m) d = std::max(d, e.compressed_blocks > 0 ? e.compress_deviation_mm : 0.0);
+  return d;
+}
+
 TEST(BlockCompressor, CtolReplacesTheContourToleranceOfTheRuns) {
   // MD20482 units digit 1: the contour tolerance SD42475 (0.05 mm), or CTOL= in the program.
   auto p = testing::test_profile();
   p.compressor.mode = 1;
   p.compressor.contur_tol_mm = 0.05;
-  std::string wave;
-  for (int i = 1; i <= 200; ++i)
-    wave += "G1 X" + std::to_string(0.5 * i) + " Y" + std::to_string(0.3 * std::sin(0.7 * i)) + "\n";
-  const auto largest = [](const std::vector<PathElement>& m) {
-    double d = 0;
-    for (const auto& e : m) d = std::max(d, e.compressed_blocks > 0 ? e.compress_deviation_mm : 0.0);
-    return d;
-  };
+  const std::string wave = wave_blocks();
   const auto data = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + wave + "M30\n", p);
   const auto ctol = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\nCTOL=0.002\n" + wave + "M30\n", p);
   const auto reset = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\nCTOL=0.002\nCTOL=-1\n" + wave + "M30\n", p);
@@ -99,14 +106,7 @@ TEST(BlockCompressor, CtolHoldsUnderTheAxisToleranceMode) {
   auto p = testing::test_profile();
   p.compressor.mode = 0;
   for (auto& axis : p.axes) axis.compress_pos_tol_mm = 0.1;
-  std::string wave;
-  for (int i = 1; i <= 200; ++i)
-    wave += "G1 X" + std::to_string(0.5 * i) + " Y" + std::to_string(0.3 * std::sin(0.7 * i)) + "\n";
-  const auto largest = [](const std::vector<PathElement>& m) {
-    double d = 0;
-    for (const auto& e : m) d = std::max(d, e.compressed_blocks > 0 ? e.compress_deviation_mm : 0.0);
-    return d;
-  };
+  const std::string wave = wave_blocks();
   const auto data = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + wave + "M30\n", p);
   const auto ctol = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\nCTOL=0.002 ATOL[X]=0.05 ATOL[Y]=0.05\n" + wave + "M30\n", p);
   EXPECT_GT(largest(data), 0.002);
