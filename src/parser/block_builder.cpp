@@ -66,7 +66,17 @@ class ProgramLoader::BlockBuilder {
     l_.m_used_.set(static_cast<size_t>(code));
     has_words_ = true;
     if (code == 17) action_ = PendingAction::Return;
-    if (code == 2 || code == 30) action_ = PendingAction::EndProgram;
+    if (code == 2 || code == 30) {
+      // In a called program M2/M30 end it and return to the calling level, as M17 does
+      // (Fundamentals, "Subprograms": a subprogram, like a main program, may end with M2; there
+      // it means the return): main programs called from a collector program run one after the other.
+      if (l_.frames_.size() > 1) {
+        out_.m.back().code = 17;
+        action_ = PendingAction::Return;
+      } else {
+        action_ = PendingAction::EndProgram;
+      }
+    }
   }
 
   void address(const Item& item) {

@@ -49,7 +49,7 @@ constexpr std::array kStatements{
     Row{"PROC name(type p, VAR type q, type r[n]) SAVE DISPLOF SBLOF", M, "subprogram with value and reference parameters; SAVE restores the caller's modal G functions and frames"},
     Row{"EXTERN name(types)", M, "declaration of a subprogram with parameters (nothing to execute)"},
     Row{"name / name(args) / L123 / CALL \"name\" / name P3", M, "subprogram calls (16 levels), passes"},
-    Row{"RET / M17 / M2 / M30", M, "end of subprogram / program"},
+    Row{"RET / M17 / M2 / M30", M, "end of subprogram / program (M2, M30 in a called program return to the caller, as M17)"},
     Row{"IF ... ELSE ... ENDIF", M, "structured condition"},
     Row{"WHILE ... ENDWHILE", M, "loop"},
     Row{"FOR v = a TO b ... ENDFOR", M, "counting loop (INT/REAL variable or R parameter)"},

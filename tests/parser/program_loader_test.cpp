@@ -218,9 +218,12 @@ TEST_F(Loader, SkipLevels) {
   EXPECT_EQ(xs(run("/X1\n/1 X2\nM30\n")), (std::vector<double>{1, 2}));  // default: all executed
 }
 
-TEST_F(Loader, M2EndsFromInsideASubprogram) {
-  write("lib/STOPHERE.SPF", "X1\nM2\nX2\n");
-  EXPECT_EQ(xs(run("STOPHERE\nX3\nM30\n")), (std::vector<double>{1}));
+TEST_F(Loader, M2AndM30InASubprogramReturnToTheCaller) {
+  // Fundamentals, "Subprograms": a subprogram, like a main program, may end with M2; there it
+  // means the return to the calling level (as M17/RET). M30 likewise.
+  write("lib/ENDS_M2.SPF", "X1\nM2\nX2\n");
+  write("lib/ENDS_M30.MPF", "X4\nM30\n");
+  EXPECT_EQ(xs(run("ENDS_M2\nX3\nENDS_M30\nX5\nM30\nX6\n")), (std::vector<double>{1, 3, 4, 5}));
 }
 
 TEST_F(Loader, CrlfAndLatin1Files) {
