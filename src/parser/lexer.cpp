@@ -103,7 +103,9 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
   };
   while (i < n) {
     const char c = s[i];
-    if (c == ' ' || c == '\t' || c == '&') {  // '&' acts like a space on SINUMERIK
+    // '&' acts like a space on SINUMERIK, and so do the non-printable characters (Fundamentals,
+    // "Character set": "Non-printable special characters are treated like blanks").
+    if (c == ' ' || c == '&' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
       ++i;
       continue;
     }

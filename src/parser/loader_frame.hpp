@@ -56,9 +56,16 @@ class ProgramLoader::Scope : public VariableSource {
   ProgramLoader& loader_;
 };
 
+// Blanks, tabs and the other non-printable characters, which the control treats as blanks
+// (Fundamentals, "Character set": tape codes DC2/DC4, NUL leaders, a stray CR or form feed).
+inline bool is_blank_char(char c) {
+  const auto b = static_cast<unsigned char>(c);
+  return b == ' ' || b < 0x20 || b == 0x7F;
+}
+
 inline std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  while (!s.empty() && is_blank_char(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_blank_char(s.back())) s.remove_suffix(1);
   return s;
 }
 
