@@ -1,5 +1,7 @@
 #include "machine/machine_data_values.hpp"
 
+#include <vector>
+
 namespace drycut::machine {
 
 std::map<std::string, double, std::less<>> machine_data_values(const MachineProfile& p) {
@@ -32,8 +34,14 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MC_IGNORE_OVL_FACTOR_FOR_ADIS"] = p.smoothing.ignore_ovl_factor ? 1 : 0;  // MD20490
   md["$MC_G0_TOLERANCE_FACTOR"] = p.smoothing.g0_tolerance_factor;         // MD20560
   md["$MC_MM_MAX_AXISPOLY_PER_BLOCK"] = p.smoothing.max_axispoly_per_block;  // MD28520
-  for (const AxisData& a : p.axes) {
-    for (const std::string& axis : {a.name + "1", a.name}) {
+  // Axis data by machine axis name (X1), channel axis name (X) and machine axis number (AX1:
+  // the n-th machine axis; the geometry axes first, then the others, as MD20070 below).
+  std::vector<const AxisData*> machine_axes;
+  for (const AxisData& a : p.axes) machine_axes.push_back(&a);
+  for (const AxisData& a : p.extra_axes) machine_axes.push_back(&a);
+  for (size_t n = 0; n < machine_axes.size(); ++n) {
+    const AxisData& a = *machine_axes[n];
+    for (const std::string& axis : {a.name + "1", a.name, "AX" + std::to_string(n + 1)}) {
       md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * 60.0;        // MD32000
       md["$MA_MAX_AX_ACCEL[" + axis + "]"] = a.max_accel_mm_s2 / 1000.0;       // MD32300
       md["$MA_MAX_AX_JERK[" + axis + "]"] = a.max_jerk_mm_s3 / 1000.0;         // MD32431
