@@ -162,6 +162,11 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       case 500: case 54: case 55: case 56: case 57: select_settable_frame(ctx, code, g.column); continue;
       case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
       case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
+      case 291:
+        // ISO dialect mode (an option of the control): G, M and addresses mean other things there
+        // (G70 cycle, M98 call, R radius, #100 variables); read as Siemens code they would give a
+        // wrong path without a word. drycut reads Siemens mode only, so it stops here.
+        raise(ctx, kUnsupported, "G291 (ISO dialect mode): drycut reads only the Siemens language (G290)", g.column);
       case 644:
         // Rounding with the axes' largest dynamics: no rounding element modelled, planned as G64.
         state_.apply_code("G644");

@@ -288,12 +288,15 @@ Support g_code_support(int64_t g) {
     case 700: case 710:
     case 33: case 34: case 35: case 63: case 93: case 96: case 97: case 331: case 332:  // threads, feed types
     case 961: case 962: case 971: case 972: case 973:  // G96/G97 with the feed type linear or kept
+    case 291:  // ISO dialect mode: the interpreter stops with 990006 (it would misread what follows)
       return M;
+    case 290:  // Siemens mode: the mode drycut reads anyway
+      return E;
     case 25: case 26:  // spindle speed limits (G25/G26 S); with axis words: working area, warned
       return M;
     case 5: case 7: case 8: case 58: case 59:
     case 74: case 75: case 140: case 141:
-    case 142: case 143: case 147: case 148: case 247: case 248: case 290: case 291:
+    case 142: case 143: case 147: case 148: case 247: case 248:
     case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:
     case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
     case 817: case 818: case 819: case 820: case 821: case 822: case 823: case 824: case 825:
