@@ -15,12 +15,15 @@ constexpr size_t kMaxCachedLabels = 100000;
 }
 
 void ProgramLoader::parse_during_search(Frame& f) {
-  // A line read while skipping or searching: parsed (its syntax error is its alarm) and its label
-  // remembered, so a later backward jump finds it without reading the file again.
+  // A line read while skipping or searching: parsed for its structure and its label, which is
+  // remembered, so a later backward jump finds it without reading the file again. A line the
+  // control does not execute raises no syntax alarm (it is only read when it runs): it counts
+  // as an ordinary block without a label.
   try {
     parser_.parse(text_, parsed_);
-  } catch (const LineError& e) {
-    raise(e.number(), e.detail(), e.column());
+  } catch (const LineError&) {
+    parsed_.clear();
+    return;
   }
   if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
     f.labels.insert_or_assign(std::string(parsed_.label), position_);
