@@ -639,6 +639,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
                             ctx.block.find_address("K") || ctx.block.find_address("AR"));
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
+  // The dwell's words are checked before the block moves: a refused block adds nothing.
+  std::optional<PathElement> dwell;
+  if (ctx.dwell) dwell = dwell_element(ctx);
   emit_axis_waits(ctx);
   std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
 
@@ -695,7 +698,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (quota_.active() && !quota_.record(has_axis))
     raise(ctx, 990001, std::to_string(quota_.in_window()) + " of 10, " + std::to_string(quota_.required()) + " required");
 
-  if (ctx.dwell) emit_dwell(ctx);
+  if (dwell) emit(std::move(*dwell));
   if (ctx.tool_change) change_tool(ctx);
   if (ctx.preprocessing_stop) {
     PathElement e = element_template(ctx, ElementKind::Stop);

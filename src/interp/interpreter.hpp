@@ -199,7 +199,7 @@ class Interpreter {
   void set_speed_limit(const BlockContext& ctx, const parser::AddressWord& a);
   // A spindle speed limited by G25/G26 (warning 990013 where a limit acts).
   double limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed);
-  void emit_dwell(BlockContext& ctx);                       // G4 F / S / S<n>=
+  PathElement dwell_element(BlockContext& ctx);             // G4 F / S / S<n>=
   void warn_working_area(const BlockContext& ctx);          // G25/G26 with axis words
   // G4 S<rev> / G4 S<n>=<rev>: the dwell in seconds.
   double dwell_in_revolutions(const BlockContext& ctx, const parser::AddressWord& s);

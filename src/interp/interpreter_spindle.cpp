@@ -71,7 +71,7 @@ void Interpreter::warn_working_area(const BlockContext& ctx) {
 }
 
 // G4: F<seconds>, S<revolutions> of the master or S<n>=<revolutions> of spindle n.
-void Interpreter::emit_dwell(BlockContext& ctx) {
+PathElement Interpreter::dwell_element(BlockContext& ctx) {
   PathElement e = element_template(ctx, ElementKind::Dwell);
   const AddressWord* f = ctx.block.find_address("F");
   const AddressWord* s = nullptr;  // S or S<n>=: revolutions of the master or of spindle n
@@ -87,7 +87,7 @@ void Interpreter::emit_dwell(BlockContext& ctx) {
     raise(ctx, 12080, "G4 needs F<seconds> or S<revolutions>");
   }
   e.label = "G4";
-  emit(std::move(e));
+  return e;
 }
 
 void Interpreter::apply_cutting_speed(BlockContext& ctx, const AddressWord& svc) {
