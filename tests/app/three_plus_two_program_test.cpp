@@ -4,15 +4,15 @@
 // end to end, and pass through hand-computed points in machine coordinates.
 //
 // How drycut defines the points (docs/controller-state.md): machine = frame chain applied to the
-// programmed point; G54 of the default profile is zero, and CYCLE800 in axis-by-axis mode 27
-// (X, then Y, then Z) builds TRANS (_X0, _Y0, _Z0) * AROT X=_A * AROT Y=_B * AROT Z=_C. The
+// programmed point; G54 of the default profile is zero, and CYCLE800 in axis-by-axis mode 57
+// (bits 1-0, 3-2, 5-4: X, then Y, then Z) builds TRANS (_X0, _Y0, _Z0) * AROT X=_A * AROT Y=_B * AROT Z=_C. The
 // tools in tools.csv have length 0 (see the program folder's README: drycut would add a length
 // along machine Z, not along the swivelled tool axis), so no length term enters.
 //
-//   face 1: CYCLE800(..,27, 0,0,Z0, 0,-30,0, ..): m = (0, 0, Z0) + Ry(-30) p,
+//   face 1: CYCLE800(..,57, 0,0,Z0, 0,-30,0, ..): m = (0, 0, Z0) + Ry(-30) p,
 //           Ry(-30) (x, y, z) = (cos30 x - sin30 z, y, sin30 x + cos30 z)
 //                             = (0.8660254 x - 0.5 z, y, 0.5 x + 0.8660254 z)
-//   face 2: CYCLE800(..,27, 0,0,0, 90,0,0, ..): m = Rx(90) p = (x, -z, y)
+//   face 2: CYCLE800(..,57, 0,0,0, 90,0,0, ..): m = Rx(90) p = (x, -z, y)
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
