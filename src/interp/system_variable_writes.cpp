@@ -36,9 +36,15 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
       continue;
     }
     if (write_frame_variable(block, w)) continue;
-    if ((w.name == "$P_UIFR" || w.name == "$P_PFRAME" || w.name == "$P_BFRAME") && warned_.insert(w.name).second)
-      diagnostics_.warn(kNotModelled, w.name + " written in a form drycut does not compute: the frame stays as it was",
-                        where, block.text);
+    // Any other frame ($P_BFRAME, $P_UBFR, $P_CHBFR[n], $P_SETFRAME ...: drycut has no basic or
+    // system frames) or form (a component of $P_PFRAME): said once per name.
+    const bool frame = w.name.rfind("$P_", 0) == 0 && (w.name.ends_with("FRAME") || w.name.ends_with("FR"));
+    if (!frame || !warned_.insert(w.name).second) continue;
+    const bool kept = w.name == "$P_UIFR" || w.name == "$P_PFRAME" || w.name == "$P_IFRAME";
+    diagnostics_.warn(kNotModelled,
+                      w.name + (kept ? " written in a form drycut does not compute: the frame stays as it was"
+                                     : " written: drycut keeps no basic or system frames; the path stays without it"),
+                      where, block.text);
   }
 }
 

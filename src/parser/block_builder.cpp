@@ -354,6 +354,18 @@ class ProgramLoader::BlockBuilder {
 
   // PO[X]=(end, a2 .. a5): the axis word X=end and the coefficients; PO[]=(b2 .. b4).
   void polynomial(const Item& item) {
+    // PO[XH]/PO[YH]/PO[ZH] (ORICURVE's second curve), PO[PHI]/PO[PSI] (orientation angles),
+    // PO[THT] (the tool's rotation): orientation polynomials of 5/6-axis programs (Job
+    // Planning, "Orientation polynomials"); drycut does not model orientation: warned.
+    if (item.index_count == 1) {
+      const ExprNode& index = l_.parsed_.pool[l_.parsed_.pool.args[item.index_first]];
+      static constexpr std::string_view kOrientation[] = {"XH", "YH", "ZH", "PHI", "PSI", "THT"};
+      if (index.op == ExprOp::Name &&
+          std::find(std::begin(kOrientation), std::end(kOrientation), index.text) != std::end(kOrientation)) {
+        l_.warn_not_modelled("PO[" + std::string(index.text) + "] (orientation polynomial)", item.column);
+        return;
+      }
+    }
     PolyWord w;
     w.column = item.column;
     if (item.index_count > 0) w.axis = axis_index_text(item);

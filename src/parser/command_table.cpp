@@ -75,7 +75,12 @@ constexpr std::array kCommands{
     CommandEntry{"CP", N}, CommandEntry{"PTPG0", N}, CommandEntry{"TRAANG", N},
     CommandEntry{"TRACON", N}, CommandEntry{"FIFOCTRL", E}, CommandEntry{"DRIVEA", N},
     CommandEntry{"ORICONCW", N}, CommandEntry{"ORICONCCW", N}, CommandEntry{"ORICONIO", N},
-    CommandEntry{"ORICONTO", N}, CommandEntry{"ORICURVE", N}, CommandEntry{"MEASA", N},
+    CommandEntry{"ORICONTO", N}, CommandEntry{"ORICURVE", N}, CommandEntry{"ORIROTA", N}, CommandEntry{"ORIROTR", N},
+    CommandEntry{"ORIROTT", N},  CommandEntry{"ORIROTC", N},
+    // Orientation words of 5/6-axis programs: cone opening angle (ORICONxx), the second contact
+    // point of ORICURVE, the tool's rotation angle, CUT3DC's insertion depth.
+    CommandEntry{"NUT", N},      CommandEntry{"XH", N},       CommandEntry{"YH", N},
+    CommandEntry{"ZH", N},       CommandEntry{"THETA", N},    CommandEntry{"ISD", N}, CommandEntry{"MEASA", N},
     CommandEntry{"MEAWA", N},   CommandEntry{"OVRA", N},    CommandEntry{"OVRRAP", N},
     CommandEntry{"COMPSURF", N}, CommandEntry{"WAITMC", N}, CommandEntry{"WAITE", N},
     CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
