@@ -57,7 +57,7 @@ constexpr std::array kStatements{
     Row{"LOOP ... ENDLOOP", M, "endless loop (left by a jump)"},
     Row{"GOTOF / GOTOB / GOTO / GOTOC target", M, "jumps to a label, block number, STRING variable or string expression"},
     Row{"GOTOS", M, "back to the first block of the program (after its definitions)"},
-    Row{"IF cond GOTOx target", M, "conditional jump"},
+    Row{"IF cond GOTOx target", M, "conditional jump; several in one block: the first whose condition holds (GOTOF :30 jumps to main block 30)"},
     Row{"CASE expr OF c GOTOx l ... DEFAULT GOTOx l", M, "multi-way jump"},
     Row{"REPEAT start [end] P=n / REPEATB label P=n", M, "program section repetition"},
     Row{"CALL BLOCK start TO end", M, "the program section between the labels runs once (as REPEAT start end)"},

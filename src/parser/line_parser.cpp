@@ -95,7 +95,10 @@ void LineParser::parse_head(ParsedLine& out) {
       out.number_column = peek().column;
       pos_ += 2;
     }
-    if (out.label.empty() && peek().kind == TokenKind::Name && peek(1).kind == TokenKind::Colon) {
+    // "GOTOF :30" jumps to main block 30: a jump keyword is never a label.
+    JumpDirection jump;
+    if (out.label.empty() && peek().kind == TokenKind::Name && peek(1).kind == TokenKind::Colon &&
+        !jump_direction(peek().text, jump)) {
       out.label = peek().text;
       out.label_column = peek().column;
       pos_ += 2;
@@ -118,6 +121,9 @@ void LineParser::parse_jump_target(ParsedLine& out, JumpTarget& target) {
     target.label = t.text;  // a label, or a STRING variable holding one (decided when executed)
   } else if (t.kind == TokenKind::Number && !computed) {
     target.number = block_number_of(t.number);
+  } else if (t.kind == TokenKind::Colon && after == TokenKind::Number) {
+    target.number = block_number_of(peek(1).number);  // ":30", a main block number
+    ++pos_;
   } else if (t.kind == TokenKind::String || t.kind == TokenKind::Name || t.kind == TokenKind::Number) {
     target.expr = expression(out);  // GOTOF "LBL"<<R1
     return;
@@ -398,6 +404,21 @@ bool LineParser::parse_statement(ParsedLine& out) {
       out.statement = Statement::IfGoto;
       ++pos_;
       parse_jump_target(out);
+      // Further conditional jumps in the same block (Job Planning, "Conditional jumps": several
+      // in one block, the first whose condition holds is taken): kept as CASE-like branches.
+      while (peek().kind == TokenKind::Name && peek().text == "IF") {
+        ++pos_;
+        CaseBranch b;
+        b.value = expression(out);
+        if (!(peek().kind == TokenKind::Name && jump_direction(peek().text, b.jump)))
+          throw LineError(12080, peek().column, "a jump (GOTOF, GOTOB ...) expected after the condition");
+        ++pos_;
+        const JumpDirection first = out.jump;
+        out.jump = b.jump;  // parse_jump_target reads the direction from the line (GOTOS)
+        parse_jump_target(out, b.target);
+        out.jump = first;
+        out.cases.push_back(b);
+      }
     } else {
       out.statement = Statement::If;
     }
