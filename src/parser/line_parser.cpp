@@ -90,6 +90,11 @@ void LineParser::parse_head(ParsedLine& out) {
       out.number = number;
       out.number_column = peek().column;
       ++pos_;
+    } else if (!out.number && peek().kind == TokenKind::Name && peek().text == "N" &&
+               peek(1).kind == TokenKind::Number && peek(1).number >= 0 && peek(1).number == std::trunc(peek(1).number)) {
+      out.number = block_number_of(peek(1).number);  // "N 20": a blank after the address, as "X 10"
+      out.number_column = peek().column;
+      pos_ += 2;
     } else if (!out.number && peek().kind == TokenKind::Colon && peek(1).kind == TokenKind::Number) {
       out.number = block_number_of(peek(1).number);  // ":100" main block (saturated beyond int64)
       out.number_column = peek().column;
