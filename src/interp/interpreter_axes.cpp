@@ -199,7 +199,8 @@ void Interpreter::position_geometry_axes(BlockContext& ctx, std::vector<ExtraAxi
     const double velocity = std::min(geometry_positioning_feed_[i], profile_.axes[i].max_velocity_mm_s);
     if (velocity > 0) time_s = std::max(time_s, travel / velocity);
   }
-  e.feed_mm_s = time_s > 0 ? e.curve->length() / time_s : 0.0;
+  // A move of no length (the axes already there) still needs a feed of its own.
+  e.feed_mm_s = time_s > 0 ? e.curve->length() / time_s : geometry_positioning_feed_[0];
   e.dynamics.exact_stop_this_block = true;
   e.dynamics.profile = AccelProfile::Brisk;  // BRISKA, the positioning axes' default (MD32420)
   position_ = e.curve->end();
