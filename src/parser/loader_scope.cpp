@@ -74,6 +74,12 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
       const std::string text = v->get(v->element({}, column)).text;
       return Value::of_text(std::string(1, text[character_position(text, indices[0], column)]));
     }
+    if (v->type() == DataType::Frame && v->rank() == 0 && indices.size() == 2) {
+      // A component of a FRAME variable (_FR[X,TR]): valid, but the loader keeps frames as the
+      // text of their functions and computes no components (docs/controller-state.md, Frames).
+      l.warn(990007, std::string(name) + "[axis, component] of a FRAME variable is not computed: 0 assumed", column);
+      return Value(0.0);
+    }
     return v->get(v->element(indices, column));
   }
   if (indices.empty()) {
