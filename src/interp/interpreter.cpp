@@ -699,6 +699,11 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     raise(ctx, 990001, std::to_string(quota_.in_window()) + " of 10, " + std::to_string(quota_.required()) + " required");
 
   if (dwell) emit(std::move(*dwell));
+  emit_block_end(ctx);
+}
+
+void Interpreter::emit_block_end(BlockContext& ctx) {
+  // What a block does after its motion: tool change, STOPRE, M0/M1/M2/M30.
   if (ctx.tool_change) change_tool(ctx);
   if (ctx.preprocessing_stop) {
     PathElement e = element_template(ctx, ElementKind::Stop);

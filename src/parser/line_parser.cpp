@@ -368,26 +368,8 @@ bool LineParser::parse_statement(ParsedLine& out) {
     pos_ = tokens_.size() - 1;  // the parameter types declare nothing drycut needs
     return true;
   }
-  // REDEF name attributes (Job Planning, "Redefinition of system variables, user variables and
-  // NC language commands (REDEF)"), in definition files: new access rights (APR/APW/APRP/APWP/
-  // APRB/APWB, APX for a command), preprocessing stop, initialisation, unit or limits of a
-  // name. Nothing drycut computes changes: a declaration, checked for its form only.
   if (w == "REDEF") {
-    ++pos_;
-    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "name expected after REDEF");
-    out.statement = Statement::Extern;
-    out.call_name = peek().text;
-    ++pos_;
-    if (peek().kind == TokenKind::LBracket) {  // REDEF $MA_..[AX1]
-      while (peek().kind != TokenKind::RBracket && peek().kind != TokenKind::End) ++pos_;
-      if (peek().kind == TokenKind::RBracket) ++pos_;
-    }
-    while (peek().kind == TokenKind::Name && (is_definition_attribute(peek().text) || peek().text == "APX")) {
-      ++pos_;
-      if (peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) ++pos_;
-      if (peek().kind == TokenKind::Number) ++pos_;
-    }
-    expect_end();
+    parse_redef(out);
     return true;
   }
   if (w == "DEFINE") {
@@ -403,31 +385,7 @@ bool LineParser::parse_statement(ParsedLine& out) {
     return true;
   }
   if (w == "IF") {
-    ++pos_;
-    out.condition = expression(out);
-    if (peek().kind == TokenKind::Name && jump_direction(peek().text, out.jump)) {
-      out.statement = Statement::IfGoto;
-      ++pos_;
-      parse_jump_target(out);
-      // Further conditional jumps in the same block (Job Planning, "Conditional jumps": several
-      // in one block, the first whose condition holds is taken): kept as CASE-like branches.
-      while (peek().kind == TokenKind::Name && peek().text == "IF") {
-        ++pos_;
-        CaseBranch b;
-        b.value = expression(out);
-        if (!(peek().kind == TokenKind::Name && jump_direction(peek().text, b.jump)))
-          throw LineError(12080, peek().column, "a jump (GOTOF, GOTOB ...) expected after the condition");
-        ++pos_;
-        const JumpDirection first = out.jump;
-        out.jump = b.jump;  // parse_jump_target reads the direction from the line (GOTOS)
-        parse_jump_target(out, b.target);
-        out.jump = first;
-        out.cases.push_back(b);
-      }
-    } else {
-      out.statement = Statement::If;
-    }
-    expect_end();
+    parse_if(out);
     return true;
   }
   if (w == "ELSE") return simple(Statement::Else);
@@ -481,6 +439,57 @@ bool LineParser::parse_statement(ParsedLine& out) {
   }
   if (const std::optional<bool> call = parse_call(out, w)) return *call;
   return false;
+}
+
+// REDEF name attributes (Job Planning, "Redefinition of system variables, user variables and
+// NC language commands (REDEF)"), in definition files: new access rights (APR/APW/APRP/APWP/
+// APRB/APWB, APX for a command), preprocessing stop, initialisation, unit or limits of a
+// name. Nothing drycut computes changes: a declaration, checked for its form only.
+void LineParser::parse_redef(ParsedLine& out) {
+  ++pos_;
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "name expected after REDEF");
+  out.statement = Statement::Extern;
+  out.call_name = peek().text;
+  ++pos_;
+  if (peek().kind == TokenKind::LBracket) {  // REDEF $MA_..[AX1]
+    while (peek().kind != TokenKind::RBracket && peek().kind != TokenKind::End) ++pos_;
+    if (peek().kind == TokenKind::RBracket) ++pos_;
+  }
+  while (peek().kind == TokenKind::Name && (is_definition_attribute(peek().text) || peek().text == "APX")) {
+    ++pos_;
+    if (peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) ++pos_;
+    if (peek().kind == TokenKind::Number) ++pos_;
+  }
+  expect_end();
+}
+
+// IF cond (structured) or IF cond GOTOx target [IF cond GOTOx target ...].
+void LineParser::parse_if(ParsedLine& out) {
+  ++pos_;
+  out.condition = expression(out);
+  if (peek().kind == TokenKind::Name && jump_direction(peek().text, out.jump)) {
+    out.statement = Statement::IfGoto;
+    ++pos_;
+    parse_jump_target(out);
+    // Further conditional jumps in the same block (Job Planning, "Conditional jumps": several
+    // in one block, the first whose condition holds is taken): kept as CASE-like branches.
+    while (peek().kind == TokenKind::Name && peek().text == "IF") {
+      ++pos_;
+      CaseBranch b;
+      b.value = expression(out);
+      if (!(peek().kind == TokenKind::Name && jump_direction(peek().text, b.jump)))
+        throw LineError(12080, peek().column, "a jump (GOTOF, GOTOB ...) expected after the condition");
+      ++pos_;
+      const JumpDirection first = out.jump;
+      out.jump = b.jump;  // parse_jump_target reads the direction from the line (GOTOS)
+      parse_jump_target(out, b.target);
+      out.jump = first;
+      out.cases.push_back(b);
+    }
+  } else {
+    out.statement = Statement::If;
+  }
+  expect_end();
 }
 
 // "<start label> TO <end label>" of CALL [..] BLOCK, to the end of the line.

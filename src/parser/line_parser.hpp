@@ -23,6 +23,8 @@ class LineParser {
   bool parse_statement(ParsedLine& out);
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_section_labels(std::string_view& start, std::string_view& end);
+  void parse_redef(ParsedLine& out);
+  void parse_if(ParsedLine& out);
   void parse_words(ParsedLine& out);
   void parse_list_assignment(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..), MEASA[X]=(..)
   // The values up to ')' (after '(') into the pool's argument list as item.arg_first/arg_count.

@@ -304,6 +304,20 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
   raise(14080, label.empty() ? "N" + std::to_string(*number) : label, column);
 }
 
+void ProgramLoader::execute_if_goto() {
+  // IF c1 GOTOF l1 [IF c2 GOTOF l2 ...]: the first condition that holds jumps; none: the next block.
+  if (eval(parsed_.condition) != 0.0) {
+    jump(parsed_.jump, parsed_.target);
+    return;
+  }
+  const std::vector<CaseBranch> more = parsed_.cases;  // the jump reuses parsed_
+  for (const CaseBranch& b : more)
+    if (eval(b.value) != 0.0) {
+      jump(b.jump, b.target);
+      return;
+    }
+}
+
 void ProgramLoader::execute_case() {
   // CASE expr OF c1 GOTOF l1 c2 GOTOF l2 DEFAULT GOTOF l3: the first constant equal to the
   // value jumps; none -> DEFAULT; no DEFAULT -> the next block.

@@ -220,17 +220,7 @@ bool ProgramLoader::execute_line(Block& out) {
         return false;
       case Statement::IfGoto:
         f.executed_block = true;
-        if (eval(parsed_.condition) != 0.0) {
-          jump(parsed_.jump, parsed_.target);
-        } else {
-          // IF c1 GOTOF l1 IF c2 GOTOF l2 ...: the first condition that holds jumps.
-          const std::vector<CaseBranch> more = parsed_.cases;  // the jump reuses parsed_
-          for (const CaseBranch& b : more)
-            if (eval(b.value) != 0.0) {
-              jump(b.jump, b.target);
-              break;
-            }
-        }
+        execute_if_goto();
         return false;
       case Statement::Case:
         f.executed_block = true;

@@ -145,6 +145,7 @@ class ProgramLoader {
   void expand_macros();
   // loader_control_flow.cpp
   void execute_control();
+  void execute_if_goto();
   void execute_case();
   void execute_repeat_section();
   void run_program_section(const std::string& start_label, const std::string& end_label, uint32_t column);
