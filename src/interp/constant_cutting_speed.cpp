@@ -33,6 +33,7 @@ double constant_cutting_speed_rpm(double speed_mm_min, double x0, double x1, dou
     return min_rpm > 0 ? std::max(n, min_rpm) : n;
   };
   if (speed_mm_min <= 0) return 0.0;
+  if (min_rpm > 0 && min_rpm >= max_rpm) return min_rpm;  // G25 above the limits: it holds throughout
   if (x0 == x1) return at(x0);
   double integral = 0.0;
   if ((x0 >= 0) == (x1 >= 0)) {

@@ -90,7 +90,10 @@ std::optional<Value> InterpreterStateView::frame_variable(std::string_view n, st
   if (axis < 0) return std::nullopt;
   if (settable >= 0) {
     const FrameComponents& c = interpreter_.settable_components(settable);
-    if (!c.composed()) return parser::Value(*component_of(c, axis, component.text, unit));
+    if (!c.composed()) {
+      const std::optional<double> v = component_of(c, axis, component.text, unit);
+      return v ? std::optional<Value>(Value(*v)) : std::nullopt;
+    }
   }
   if (auto v = component_of_matrix(frame, axis, component.text, unit)) return Value(*v);
   return std::nullopt;

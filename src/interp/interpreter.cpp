@@ -539,8 +539,9 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
 
 double Interpreter::poll_clock(uint64_t line) {
   if (line != line_at_poll_) {
-    if (emitted_ == emitted_at_poll_) clock_wait_s_ += profile_.ipo_cycle_s;
-    emitted_at_poll_ = emitted_;
+    const double worked = nominal_time_s_ - waited_s_;  // motion and dwells, not the waits
+    if (worked == worked_at_poll_) clock_wait_s_ += profile_.ipo_cycle_s;
+    worked_at_poll_ = worked;
     line_at_poll_ = line;
   }
   return nominal_time_s();
@@ -551,12 +552,12 @@ void Interpreter::emit_clock_wait(const BlockContext& ctx) {
   PathElement e = element_template(ctx, ElementKind::Dwell);
   e.dwell_s = clock_wait_s_;
   e.label = "waiting for the clock";
+  waited_s_ += clock_wait_s_;
   clock_wait_s_ = 0.0;
   emit(std::move(e));
 }
 
 void Interpreter::emit(PathElement&& element) {
-  ++emitted_;
   add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;

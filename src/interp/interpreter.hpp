@@ -69,9 +69,10 @@ class Interpreter {
   double nominal_time_s() const { return nominal_time_s_ + clock_wait_s_; }
   // A read of the run clock ($AC_OPERATING_TIME, $AC_TIMER, $A_SECOND ...) on program line `line`
   // (a running count): the time it sees. The line waits for the main run (a main-run variable
-  // stops the block preparation); when nothing was executed since the last line that read the
-  // clock, the program is polling it, and each such line takes one interpolation cycle: a wait
-  // loop with an empty body ends when its time has passed. The wait becomes a dwell before the
+  // stops the block preparation); when nothing that takes time ran since the last line that read
+  // the clock (no motion, no dwell: a STOPRE or an M function does not count), the program is
+  // polling it, and each such line takes one interpolation cycle: a wait loop ends when its time
+  // has passed. The wait becomes a dwell before the
   // next block's elements (docs/controller-state.md, "Clock, run-time counters").
   double poll_clock(uint64_t line);
   // Channel axes beyond X, Y, Z ($AA_IM[A] reads their positions).
@@ -228,9 +229,9 @@ class Interpreter {
   std::optional<double> held_angle_deg_;  // ANG= of a block without end point: the first of two lines
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
   double clock_wait_s_ = 0.0;    // clock polls not yet emitted as a dwell (poll_clock)
-  uint64_t emitted_ = 0;         // elements emitted so far
-  uint64_t emitted_at_poll_ = UINT64_MAX;  // ... at the last line that read the clock
-  uint64_t line_at_poll_ = UINT64_MAX;     // that line
+  double waited_s_ = 0.0;               // clock waits emitted so far (part of nominal_time_s_)
+  double worked_at_poll_ = -1.0;         // nominal time without them at the last line that read the clock
+  uint64_t line_at_poll_ = UINT64_MAX;   // that line
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "interp/geometry/line_curve.hpp"
 #include "interp/interpreter.hpp"
@@ -233,14 +234,20 @@ void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
 }
 
 void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) {
-  // The master spindle (S1) is simulated; the others take the same machine data.
-  const std::string name = "S" + w.axis;
+  // SPOS= (no number) positions the master spindle (MD20090, SETMS); every spindle takes the
+  // same machine data. Only the master's angle is followed; another spindle stands where unknown.
+  const int number = w.axis.empty() ? master_spindle_ : std::atoi(w.axis.c_str());
+  const bool master = number == master_spindle_;
+  const std::string name = "S" + std::to_string(number);
   if (extra_axes_.running(name)) {
     ctx.waits.push_back(name);
     extra_axes_.clear_running(name);
   }
   constexpr double kTurn = 360.0;
-  const bool turning = state_.spindle != SpindleState::Stopped && state_.spindle_rpm > 0;
+  const auto other = other_spindles_.find(number);
+  const double rpm = master ? state_.spindle_rpm : other != other_spindles_.end() ? other->second.rpm : 0.0;
+  const bool turning = rpm > 0 && (master ? state_.spindle != SpindleState::Stopped
+                                          : other != other_spindles_.end() && other->second.turning());
   PositioningMove m;
   m.axis = name;
   m.velocity = profile_.spindle_posctrl_velo_rpm * kTurn / 60.0;
@@ -250,9 +257,11 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   } else if (turning) {
     // From rotation the spindle brakes to the positioning speed, finds its position and turns on
     // in its direction: where it stands is unknown in a dry run, so half a turn is taken.
-    const double brake_rev_s = std::max(0.0, state_.spindle_rpm - profile_.spindle_posctrl_velo_rpm) / 60.0;
+    const double brake_rev_s = std::max(0.0, rpm - profile_.spindle_posctrl_velo_rpm) / 60.0;
     m.lead_time_s = brake_rev_s / profile_.spindle_speedctrl_accel_rev_s2;
     m.travel = kTurn / 2;
+  } else if (!master) {
+    m.travel = kTurn / 2;  // a standing spindle whose angle drycut does not follow: half a turn
   } else {
     const ValueMode mode = w.mode == ValueMode::Default || w.mode == ValueMode::Absolute ? ValueMode::Direct : w.mode;
     double d = wrap_modulo(w.value, kTurn) - spindle_angle_;
@@ -261,8 +270,12 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     if (mode == ValueMode::Direct && d > kTurn / 2) d = kTurn - d;
     m.travel = d;
   }
-  spindle_angle_ = wrap_modulo(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value, kTurn);
-  state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
+  if (master) {
+    spindle_angle_ = wrap_modulo(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value, kTurn);
+    state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
+  } else {
+    other_spindles_[number].state = SpindleState::Stopped;
+  }
   m.block_synchronous = w.kind == AxisWordKind::SPos;
   if (!m.block_synchronous) extra_axes_.mark_running(name);
   ctx.positioning.push_back(std::move(m));

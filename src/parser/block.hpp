@@ -83,7 +83,7 @@ struct SystemWrite {
 enum class AxisWordKind : uint8_t { Pos, PosA, SPos, SPosA, AxialFeed, AccelPercent, VelocityPercent, JerkPercent };
 struct AxisWord {
   AxisWordKind kind = AxisWordKind::Pos;
-  std::string axis;  // upper case; the spindle number as text for SPOS[n] ("1" for SPOS=)
+  std::string axis;  // upper case; the spindle number as text for SPOS[n] (empty for SPOS=: the master)
   double value = 0.0;
   ValueMode mode = ValueMode::Default;
   uint32_t column = 0;

@@ -134,7 +134,7 @@ class ProgramLoader::BlockBuilder {
       else if (index.kind == ValueKind::Axis || index.is_text()) w.axis = index.text;
       else throw LineError(12150, item.column, std::string(item.name) + "[...] needs an axis");
     } else if (item.index_count == 0 && spindle) {
-      w.axis = "1";  // the master spindle
+      w.axis.clear();  // the master spindle, whichever it is (SETMS): the interpreter knows
     } else {
       throw LineError(12410, item.column, std::string(item.name) + "[...] takes one axis");
     }

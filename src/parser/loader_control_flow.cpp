@@ -1,6 +1,7 @@
 // Control flow of the loader: structured loops and IF (PGA Job Planning "Program flow control"),
 // jumps GOTOF/GOTOB/GOTO/GOTOC to labels, block numbers or computed targets, CASE, and program
 // section repetition REPEAT/REPEATB.
+#include <cctype>
 #include <cmath>
 
 #include "parser/ascii_case.hpp"
@@ -14,16 +15,54 @@ namespace {
 constexpr size_t kMaxCachedLabels = 100000;
 }
 
+namespace {
+
+// The block number and label of a line the parser refuses, from its text ("N10 LBL: ...",
+// "LBL: N10 ..."), so that a jump over it or to it still finds them.
+void head_of_unparsable_line(std::string_view t, std::optional<int64_t>& number, std::string& label) {
+  size_t i = 0;
+  auto blanks = [&] {
+    while (i < t.size() && is_blank_char(t[i])) ++i;
+  };
+  auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  blanks();
+  if (i < t.size() && t[i] == '/') i += (i + 1 < t.size() && std::isdigit(static_cast<unsigned char>(t[i + 1]))) ? 2 : 1;
+  for (int round = 0; round < 2; ++round) {
+    blanks();
+    size_t j = i;
+    if (j < t.size() && (t[j] == 'N' || t[j] == 'n') && j + 1 < t.size() && std::isdigit(static_cast<unsigned char>(t[j + 1]))) {
+      int64_t n = 0;
+      for (++j; j < t.size() && std::isdigit(static_cast<unsigned char>(t[j])) && n < 100000000000LL; ++j) n = n * 10 + (t[j] - '0');
+      number = n;
+      i = j;
+      continue;
+    }
+    if (j < t.size() && letter(t[j])) {
+      while (j < t.size() && (letter(t[j]) || std::isdigit(static_cast<unsigned char>(t[j])))) ++j;
+      size_t k = j;
+      while (k < t.size() && is_blank_char(t[k])) ++k;
+      if (k < t.size() && t[k] == ':') {
+        label = upper_ascii(t.substr(i, j - i));
+        i = k + 1;
+      }
+    }
+  }
+}
+
+}  // namespace
+
 void ProgramLoader::parse_during_search(Frame& f) {
   // A line read while skipping or searching: parsed for its structure and its label, which is
   // remembered, so a later backward jump finds it without reading the file again. A line the
   // control does not execute raises no syntax alarm (it is only read when it runs): it counts
-  // as an ordinary block without a label.
+  // as an ordinary block with the number and label its text shows.
   try {
     parser_.parse(text_, parsed_);
   } catch (const LineError&) {
     parsed_.clear();
-    return;
+    search_label_.clear();
+    head_of_unparsable_line(text_, parsed_.number, search_label_);
+    parsed_.label = search_label_;
   }
   if (!parsed_.label.empty() && f.labels.size() < kMaxCachedLabels)
     f.labels.insert_or_assign(std::string(parsed_.label), position_);
@@ -242,7 +281,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
   const std::string from_text = text_;
   auto matches = [&]() { return label.empty() ? parsed_.number == number : parsed_.label == label; };
   // Reads the next line for a search; false at end of file. Parses it (a line that cannot be
-  // parsed stops the search with its own alarm).
+  // parsed counts with the number and label of its text: parse_during_search).
   auto scan_line = [&]() {
     for (;;) {
       if (!f.reader.next(raw_)) return false;

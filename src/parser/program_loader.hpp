@@ -185,6 +185,7 @@ class ProgramLoader {
   ParsedLine parsed_;
   RawLine raw_;
   std::string text_;  // current line, decoded (macros expanded)
+  std::string search_label_;  // the label of a line the parser refused during a search (parse_during_search)
   LinePosition position_;
 
   PendingAction pending_ = PendingAction::None;

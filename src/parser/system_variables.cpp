@@ -113,6 +113,13 @@ void SystemVariables::write(std::string_view name, std::span<const Value> indice
     frames_[std::move(key)] = v;
     return;
   }
+  if (v.is_number() && name.rfind("$P_", 0) == 0 &&
+      (name.ends_with("FRAME") || name.ends_with("FR"))) {
+    // A frame component ($P_IFRAME[X,TR]=50): the interpreter keeps the frame and answers later
+    // reads; a copy here would outlive the next G54 .. that changes the frame.
+    written_.erase(key);
+    return;
+  }
   if (v.is_number()) {
     texts_.erase(key);
     frames_.erase(key);
