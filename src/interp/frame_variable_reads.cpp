@@ -17,16 +17,12 @@
 #include "interp/controller_state_view.hpp"
 #include "interp/frame_components.hpp"
 #include "interp/interpreter_block.hpp"
+#include "parser/system_variables.hpp"
 
 namespace drycut::interp {
 namespace {
 
 using parser::Value;
-
-bool is_frame_name(std::string_view n) {
-  if (n.rfind("$P_", 0) != 0) return false;
-  return n.ends_with("FRAME") || n.ends_with("FR");
-}
 
 // Indices that select the frame itself (before [axis, component]).
 size_t frame_index_count(std::string_view n) {
@@ -63,7 +59,7 @@ std::optional<double> component_of(const FrameComponents& f, int axis, std::stri
 }  // namespace
 
 std::optional<Value> InterpreterStateView::frame_variable(std::string_view n, std::span<const Value> indices) const {
-  if (!is_frame_name(n)) return std::nullopt;
+  if (!parser::is_frame_variable_name(n)) return std::nullopt;
   const size_t first = frame_index_count(n);
   if (indices.size() != first && indices.size() != first + 2) return std::nullopt;
   const ModalState& s = interpreter_.state();

@@ -7,6 +7,7 @@
 // loader (later reads see them) and change nothing drycut times.
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
+#include "parser/system_variables.hpp"
 
 #include <cctype>
 #include <cstdlib>
@@ -38,8 +39,7 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
     if (write_frame_variable(block, w)) continue;
     // Any other frame ($P_BFRAME, $P_UBFR, $P_CHBFR[n], $P_SETFRAME ...: drycut has no basic or
     // system frames) or form (a component of $P_PFRAME): said once per name.
-    const bool frame = w.name.rfind("$P_", 0) == 0 && (w.name.ends_with("FRAME") || w.name.ends_with("FR"));
-    if (!frame || !warned_.insert(w.name).second) continue;
+    if (!parser::is_frame_variable_name(w.name) || !warned_.insert(w.name).second) continue;
     const bool kept = w.name == "$P_UIFR" || w.name == "$P_PFRAME" || w.name == "$P_IFRAME";
     diagnostics_.warn(kNotModelled,
                       w.name + (kept ? " written in a form drycut does not compute: the frame stays as it was"

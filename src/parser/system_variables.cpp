@@ -113,8 +113,7 @@ void SystemVariables::write(std::string_view name, std::span<const Value> indice
     frames_[std::move(key)] = v;
     return;
   }
-  if (v.is_number() && name.rfind("$P_", 0) == 0 &&
-      (name.ends_with("FRAME") || name.ends_with("FR"))) {
+  if (v.is_number() && is_frame_variable_name(name)) {
     // A frame component ($P_IFRAME[X,TR]=50): the interpreter keeps the frame and answers later
     // reads; a copy here would outlive the next G54 .. that changes the frame.
     written_.erase(key);

@@ -31,6 +31,12 @@ enum class SystemVariableClass : uint8_t { MachineData, SettingData, State, Inpu
 SystemVariableClass classify_system_variable(std::string_view upper_name);
 std::string_view system_variable_class_name(SystemVariableClass c);
 
+// A frame variable of the $P_ family: every name ending in FRAME or FR ($P_PFRAME, $P_UIFR,
+// $P_IFRAME, $P_BFRAME, $P_CHBFR ...; K2, "Frames").
+inline bool is_frame_variable_name(std::string_view upper_name) {
+  return upper_name.rfind("$P_", 0) == 0 && (upper_name.ends_with("FRAME") || upper_name.ends_with("FR"));
+}
+
 // "$MA_X" + [X1] -> "$MA_X[X1]": the key of machine data maps and written values.
 std::string system_variable_key(std::string_view upper_name, std::span<const Value> indices);
 
