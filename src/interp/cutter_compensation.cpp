@@ -182,7 +182,7 @@ void CutterCompensation::complete_approach(const PathElement& first) {
     const Vec3 beside = corner + d * plane_.normal.cross(t_approach);
     curves.push_back(std::make_shared<geometry::LineCurve>(from, beside));
     for (const auto& c : outside_corner_curves(corner, t_approach, t_first, d,
-                                               approach_.compensation.intersection_corners, plane_))
+                                               corner_rule(approach_.compensation), plane_))
       curves.push_back(c);
   } else {
     curves.push_back(std::make_shared<geometry::LineCurve>(from, target));
@@ -235,7 +235,7 @@ void CutterCompensation::deselect(PathElement retract) {
   if (retract.compensation.contour_approach && !t_retract.isZero() && offset != 0.0 &&
       is_outside_corner(direction, t_retract, offset, plane_)) {
     // KONT: around the end point until perpendicular to the retract direction.
-    curves = outside_corner_curves(corner, direction, t_retract, offset, retract.compensation.intersection_corners,
+    curves = outside_corner_curves(corner, direction, t_retract, offset, corner_rule(retract.compensation),
                                    plane_);
     from = curves.back()->end();
   }
@@ -250,6 +250,10 @@ void CutterCompensation::deselect(PathElement retract) {
   }
   resolve_crossings(first_new, check_blocks());
   flush_window();
+}
+
+OutsideCornerRule CutterCompensation::corner_rule(const CompensationRequest& c) const {
+  return OutsideCornerRule::of(c.intersection_corners, profile_);
 }
 
 int CutterCompensation::check_blocks() const { return std::max(1, profile_.cutcom_maxnum_check_blocks); }
@@ -280,7 +284,7 @@ void CutterCompensation::add_motion(const PathElement& element) {
         push_corner(std::make_shared<geometry::LineCurve>(from, to), false);  // radius or side changed
       } else if (is_outside_corner(t_in, t_out, d, plane_)) {
         for (const auto& curve : outside_corner_curves(element.curve->start(), t_in, t_out, d,
-                                                       element.compensation.intersection_corners, plane_))
+                                                       corner_rule(element.compensation), plane_))
           push_corner(curve, false);
       } else {
         // Inside corner: the bridge closes the raw path; the crossing search cuts it out again.

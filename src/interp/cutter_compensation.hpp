@@ -13,8 +13,10 @@
 //   last compensated element (NORM) and goes straight to its programmed end point; KONT goes
 //   around the end point first when that is an outside corner.
 // - Outside corners: G450 circle of the tool radius around the corner (DISC is not modelled:
-//   always the plain circle), G451 the intersection of the offset lines unless the direction
-//   change exceeds 100 degrees (then the circle). Corner elements belong to the NEXT block.
+//   always the plain circle) unless the direction change is below MD20230 (then the
+//   intersection), G451 the intersection of the offset lines unless the direction change
+//   exceeds MD20210 (then the circle); cutter_compensation_corner.hpp. Corner elements belong
+//   to the NEXT block.
 //   A joint whose offset points are closer than 1e-6 mm is tangential and gets no corner element.
 // - Offsets of lines and arcs in the plane are exact LineCurves / ArcCurves; anything else is a
 //   geometry::OffsetCurve. Only the in-plane part is offset; for the normal see below.
@@ -64,6 +66,7 @@
 #include <deque>
 #include <optional>
 
+#include "interp/cutter_compensation_corner.hpp"
 #include "interp/cutter_compensation_crossing.hpp"
 #include "interp/cutter_compensation_piece.hpp"
 #include "interp/path_element.hpp"
@@ -110,6 +113,7 @@ class CutterCompensation : public ElementSink {
   void count_dummy(const PathElement& element);
   std::optional<size_t> last_piece_index() const;
   int check_blocks() const;
+  OutsideCornerRule corner_rule(const CompensationRequest& compensation) const;
 
   ElementSink& downstream_;
   const machine::MachineProfile& profile_;

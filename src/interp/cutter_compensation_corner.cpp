@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
@@ -9,6 +10,16 @@
 namespace drycut::interp {
 
 using geometry::Vec3;
+
+OutsideCornerRule OutsideCornerRule::of(bool intersection_programmed, const machine::MachineProfile& profile) {
+  constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+  return {intersection_programmed, profile.cutcom_corner_limit_deg * kRadPerDeg,
+          profile.cutcom_curve_insert_limit_deg * kRadPerDeg};
+}
+
+bool OutsideCornerRule::intersects(double direction_change_rad) const {
+  return intersection ? direction_change_rad <= corner_limit_rad : direction_change_rad < curve_insert_limit_rad;
+}
 
 Vec3 plane_direction(const Vec3& v, const CompensationPlane& plane) {
   const Vec3 w = v - plane.normal * plane.normal.dot(v);
@@ -23,13 +34,13 @@ bool is_outside_corner(const Vec3& t_in, const Vec3& t_out, double offset_mm, co
 }
 
 std::vector<geometry::CurvePtr> outside_corner_curves(const Vec3& corner, const Vec3& t_in, const Vec3& t_out,
-                                                      double offset_mm, bool intersection_corners,
+                                                      double offset_mm, const OutsideCornerRule& rule,
                                                       const CompensationPlane& plane) {
   const Vec3 from = corner + offset_mm * plane.normal.cross(t_in);
   const Vec3 to = corner + offset_mm * plane.normal.cross(t_out);
   const double radius = std::abs(offset_mm);
   const double angle = std::atan2(std::abs(plane.normal.dot(t_in.cross(t_out))), t_in.dot(t_out));
-  if (intersection_corners && angle <= kCornerLimitRad) {
+  if (rule.intersects(angle)) {
     // Both offset lines reach their intersection after r tan(angle/2) (symmetric about the corner).
     const Vec3 meet = from + radius * std::tan(0.5 * angle) * t_in;
     return {std::make_shared<geometry::LineCurve>(from, meet), std::make_shared<geometry::LineCurve>(meet, to)};

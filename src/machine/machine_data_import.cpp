@@ -410,6 +410,10 @@ class Importer {
               p.circle_error_factor, "MD21010 CIRCLE_ERROR_FACTOR", "0.001");
     map_value("program.cutcom_decel_limit", {"$SC_CUTCOM_DECEL_LIMIT"}, 1.0, p.cutcom_decel_limit,
               "SD42528 CUTCOM_DECEL_LIMIT", "0");
+    map_value("program.cutcom_corner_limit_deg", {"$MC_CUTCOM_CORNER_LIMIT"}, 1.0, p.cutcom_corner_limit_deg,
+              "MD20210 CUTCOM_CORNER_LIMIT", "100 deg");
+    map_value("program.cutcom_curve_insert_limit_deg", {"$MC_CUTCOM_CURVE_INSERT_LIMIT"}, 1.0,
+              p.cutcom_curve_insert_limit_deg, "MD20230 CUTCOM_CURVE_INSERT_LIMIT", "10 deg");
     map_int("program.cubic_spline_blocks", {"$MC_CUBIC_SPLINE_BLOCKS"}, p.cubic_spline_blocks,
             "MD20160 CUBIC_SPLINE_BLOCKS");
     // The NC block compressor (docs/compressor.md).

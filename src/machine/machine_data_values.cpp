@@ -19,6 +19,8 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MC_CIRCLE_ERROR_CONST"] = p.circle_error_const_mm;
   md["$MC_CIRCLE_ERROR_FACTOR"] = p.circle_error_factor;               // MD21010
   md["$SC_CUTCOM_DECEL_LIMIT"] = p.cutcom_decel_limit;                 // SD42528
+  md["$MC_CUTCOM_CORNER_LIMIT"] = p.cutcom_corner_limit_deg;            // MD20210
+  md["$MC_CUTCOM_CURVE_INSERT_LIMIT"] = p.cutcom_curve_insert_limit_deg;  // MD20230
   md["$MC_TOOL_CHANGE_MODE"] = p.tool_change_mode;                     // MD22550
   md["$MC_TOOL_CHANGE_M_CODE"] = p.tool_change_m_code;                 // MD22560
   md["$MC_CUTTING_EDGE_DEFAULT"] = p.cutting_edge_default;             // MD20270

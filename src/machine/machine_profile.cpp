@@ -133,6 +133,10 @@ void read_program(const json& node, MachineProfile& p) {
     p.circle_error_factor = require_non_negative(*v, r.key_path("circle_error_factor"));
   if (auto v = r.number("cutcom_decel_limit"))
     p.cutcom_decel_limit = require_range(*v, 0.0, 1.0, r.key_path("cutcom_decel_limit"));
+  if (auto v = r.number("cutcom_corner_limit_deg"))
+    p.cutcom_corner_limit_deg = require_range(*v, 0.0, 180.0, r.key_path("cutcom_corner_limit_deg"));
+  if (auto v = r.number("cutcom_curve_insert_limit_deg"))
+    p.cutcom_curve_insert_limit_deg = require_range(*v, 0.0, 180.0, r.key_path("cutcom_curve_insert_limit_deg"));
   auto positive_int = [&](const char* key, int& field) {
     if (auto v = r.integer(key)) {
       if (*v < 1 || *v > 1000000) r.fail(key, "must be in [1, 1000000]");
@@ -308,6 +312,8 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"circle_error_const_mm", p.circle_error_const_mm},
                      {"circle_error_factor", p.circle_error_factor},
                      {"cutcom_decel_limit", p.cutcom_decel_limit},
+                     {"cutcom_corner_limit_deg", p.cutcom_corner_limit_deg},
+                     {"cutcom_curve_insert_limit_deg", p.cutcom_curve_insert_limit_deg},
                      {"cubic_spline_blocks", p.cubic_spline_blocks},
                      {"cubic_spline_global", p.cubic_spline_global},
                      {"cutcom_maxnum_check_blocks", p.cutcom_maxnum_check_blocks},

@@ -128,6 +128,8 @@ struct MachineProfile {
   int cutcom_maxnum_check_blocks = 3;           // MD20240
   int cutcom_maxnum_dummy_blocks = 3;           // MD20250
   double cutcom_decel_limit = 0.0;              // SD42528: lowest tool-centre feed share on inside curves (CFC)
+  double cutcom_corner_limit_deg = 100.0;       // MD20210: G451 -> transition circle above this direction change
+  double cutcom_curve_insert_limit_deg = 10.0;  // MD20230: G450 -> intersection below this direction change
   CompressorData compressor;                    // COMPON/COMPCURV/COMPCAD (JSON object "compressor")
   SmoothingData smoothing;                      // G641/G642/G643/G645 (JSON object "smoothing")
 

@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 64> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 66> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -45,6 +45,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 64> kNames{{
     {"circle_error_const", "MD21000 CIRCLE_ERROR_CONST"},
     {"circle_error_factor", "MD21010 CIRCLE_ERROR_FACTOR"},
     {"cutcom_decel_limit", "SD42528 CUTCOM_DECEL_LIMIT"},
+    {"cutcom_corner_limit", "MD20210 CUTCOM_CORNER_LIMIT"},
+    {"cutcom_curve_insert_limit", "MD20230 CUTCOM_CURVE_INSERT_LIMIT"},
     {"cubic_spline_blocks", "MD20160 CUBIC_SPLINE_BLOCKS"},
     {"cubic_spline_global", "- (drycut option)"},
     {"cutcom_maxnum_check_blocks", "MD20240 CUTCOM_MAXNUM_CHECK_BLOCKS"},

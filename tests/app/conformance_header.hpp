@@ -7,6 +7,7 @@
 //   ; expect-end: X10 Y20 Z5          -- machine position after the last motion (any of X Y Z)
 //   ; expect-time: 12.5 tol 0.01      -- `run` total time in s, absolute tolerance
 //   ; expect-listing: NAME.elements   -- expected `drycut path --elements` output beside it
+//   ; expect-tool-centre: NAME.elements -- expected `drycut path --tool-centre --elements` output
 //   ; profile: NAME.json              -- machine profile beside it (default: the embedded one)
 // The header is the run of lines before the first program line: comments, blank lines and a
 // leading `%_N_..` file line. Other comment lines in it (the hand computation) are free text,
@@ -36,6 +37,7 @@ struct ConformanceSpec {
   std::optional<double> time_s;
   double time_tolerance_s = 0;
   std::string listing;  // file name beside the program, empty = none
+  std::string tool_centre_listing;  // the same for the tool-centre path (G41/G42 applied)
   std::string profile;  // machine profile file beside the program, empty = the embedded one
 };
 
@@ -168,12 +170,12 @@ inline bool apply_directive(const std::string& key, const std::string& value, Co
   }
   if (key == "expect-end") return parse_end(value, spec, error);
   if (key == "expect-time") return parse_time(value, spec, error);
-  if (key == "expect-listing") {
+  if (key == "expect-listing" || key == "expect-tool-centre") {
     if (value.empty() || words(value).size() != 1 || value.find('/') != std::string::npos) {
-      error = "expect-listing: must be one file name beside the program, not '" + value + "'";
+      error = key + ": must be one file name beside the program, not '" + value + "'";
       return false;
     }
-    spec.listing = value;
+    (key == "expect-listing" ? spec.listing : spec.tool_centre_listing) = value;
     return true;
   }
   if (key == "profile") {
@@ -185,7 +187,7 @@ inline bool apply_directive(const std::string& key, const std::string& value, Co
     return true;
   }
   error = "unknown directive '" + key + ":' (known: rule, expect, expect-warning, expect-end, expect-time, "
-          "expect-listing, profile)";
+          "expect-listing, expect-tool-centre, profile)";
   return false;
 }
 

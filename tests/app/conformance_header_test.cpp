@@ -32,6 +32,7 @@ TEST(ConformanceHeader, ReadsEveryDirective) {
                        "; expect-end: X10 Y-0.5 z2.5e1\n"
                        "; expect-time: 12.5 tol 0.01\n"
                        "; expect-listing: ARC.elements\n"
+                       "; expect-tool-centre: ARC_TC.elements\n"
                        "\n"
                        "G0 X0 Y0 ; expect nothing here, a plain comment\n"
                        "M30\n",
@@ -52,6 +53,7 @@ TEST(ConformanceHeader, ReadsEveryDirective) {
   EXPECT_DOUBLE_EQ(*s.time_s, 12.5);
   EXPECT_DOUBLE_EQ(s.time_tolerance_s, 0.01);
   EXPECT_EQ(s.listing, "ARC.elements");
+  EXPECT_EQ(s.tool_centre_listing, "ARC_TC.elements");
 }
 
 TEST(ConformanceHeader, OkWithOnlyTheRequiredLines) {
@@ -96,6 +98,8 @@ TEST(ConformanceHeader, RefusesMalformedHeaders) {
       {"time with a word", rule + "; expect: ok\n; expect-time: 12.5 s tol 0.1\n", "expect-time"},
       {"listing in another folder", rule + "; expect: ok\n; expect-listing: ../x.elements\n", "expect-listing"},
       {"listing empty", rule + "; expect: ok\n; expect-listing:\n", "expect-listing"},
+      {"tool-centre listing in another folder", rule + "; expect: ok\n; expect-tool-centre: a/x.elements\n",
+       "expect-tool-centre"},
       {"misspelt directive", rule + "; expect: ok\n; expect-warnings: 990002\n", "unknown"},
       {"misspelt expect", rule + "; expects: ok\n", "unknown"},
       {"capitalised key", rule + "; Expect: ok\n", "lower case"},

@@ -8,7 +8,8 @@
 // that `run` reports every `expect-warning:`, that the run's summary ends at `expect-end:`
 // (summary.end_position_mm, tolerance 1e-4 mm) and takes `expect-time:`, that the summary's
 // complete/stopped_at agree with the outcome, and with `expect-listing:` that
-// `drycut path NAME --elements` prints the listing file (lines starting with '#' are comments).
+// `drycut path NAME --elements` prints the listing file (lines starting with '#' are comments);
+// `expect-tool-centre:` the same for `drycut path NAME --tool-centre --elements`.
 // With `profile:` every command gets `--machine FILE` (a machine profile beside the program).
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -203,12 +204,15 @@ TEST_P(Conformance, Program) {
     EXPECT_NEAR(summary.value("time_s", -1.0), *spec.time_s, spec.time_tolerance_s) << "summary.time_s";
   }
 
-  if (!spec.listing.empty()) {
-    const fs::path listing = program.parent_path() / spec.listing;
-    ASSERT_TRUE(fs::exists(listing)) << "expect-listing names a missing file " << listing;
-    const CliRun path = run_shell(in_folder(program, "path", profile + "--elements 2>/dev/null"));
-    EXPECT_EQ(path.out, expected_listing(listing)) << "drycut path --elements differs from " << spec.listing;
-  }
+  auto expect_listing = [&](const std::string& file, const std::string& options) {
+    if (file.empty()) return;
+    const fs::path listing = program.parent_path() / file;
+    ASSERT_TRUE(fs::exists(listing)) << "the header names a missing listing " << listing;
+    const CliRun path = run_shell(in_folder(program, "path", profile + options + " 2>/dev/null"));
+    EXPECT_EQ(path.out, expected_listing(listing)) << "drycut path " << options << " differs from " << file;
+  };
+  expect_listing(spec.listing, "--elements");
+  expect_listing(spec.tool_centre_listing, "--tool-centre --elements");
 }
 
 INSTANTIATE_TEST_SUITE_P(Conformance, Conformance, ::testing::ValuesIn(programs()), test_name);
