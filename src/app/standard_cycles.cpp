@@ -3,6 +3,8 @@
 #include <string>
 #include <system_error>
 
+#include <spdlog/spdlog.h>
+
 // Set by CMake: the installed cycles folder relative to the installed binary's folder
 // (CMAKE_INSTALL_DATADIR/drycut/cycles seen from CMAKE_INSTALL_BINDIR).
 #ifndef DRYCUT_INSTALLED_CYCLES_RELATIVE
@@ -39,8 +41,15 @@ std::optional<std::filesystem::path> standard_cycles_folder() {
 std::vector<std::filesystem::path> search_path_with_cycles(const std::vector<std::string>& user_folders,
                                                            bool use_standard) {
   std::vector<std::filesystem::path> dirs(user_folders.begin(), user_folders.end());
-  if (use_standard)
-    if (auto cycles = standard_cycles_folder()) dirs.push_back(*cycles);
+  if (!use_standard) return dirs;
+  if (auto cycles = standard_cycles_folder()) {
+    dirs.push_back(*cycles);
+  } else {
+    // A binary copied away from its build or install tree: say why CYCLE81 & co. are missing.
+    spdlog::warn("drycut's standard cycles folder was not found beside the binary (<bindir>/cycles or "
+                 "<bindir>/" DRYCUT_INSTALLED_CYCLES_RELATIVE "); standard cycles called by the program will "
+                 "raise 14011 (give their folder with --search-path)");
+  }
   return dirs;
 }
 

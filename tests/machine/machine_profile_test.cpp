@@ -31,7 +31,8 @@ json small_profile() {
                 "work_offset_rotations_deg": {"G54": [0, 0, 30], "G500": [1, 2, 3]},
                 "start_position_mm": [7, 8, 9], "circle_error_const_mm": 0.02, "circle_error_factor": 0.002,
                 "cubic_spline_blocks": 5, "cubic_spline_global": true,
-                "cutcom_maxnum_check_blocks": 4, "cutcom_maxnum_dummy_blocks": 6},
+                "cutcom_maxnum_check_blocks": 4, "cutcom_maxnum_dummy_blocks": 6,
+                "cutcom_corner_limit_deg": 120, "cutcom_curve_insert_limit_deg": 25},
     "tools": [{"name": "T_A", "number": 3, "edges": [{"d": 1, "radius_mm": 5, "length_mm": 50},
                                                      {"d": 2, "radius_mm": 4}]}]
   })");
@@ -131,6 +132,8 @@ TEST(LoadProfile, RoundTripKeepsEveryField) {
   EXPECT_EQ(a.cubic_spline_global, b.cubic_spline_global);
   EXPECT_EQ(a.cutcom_maxnum_check_blocks, b.cutcom_maxnum_check_blocks);
   EXPECT_EQ(a.cutcom_maxnum_dummy_blocks, b.cutcom_maxnum_dummy_blocks);
+  EXPECT_EQ(b.cutcom_corner_limit_deg, 120.0);
+  EXPECT_EQ(b.cutcom_curve_insert_limit_deg, 25.0);
   ASSERT_EQ(a.tools.size(), b.tools.size());
   EXPECT_EQ(a.tools[0].name, b.tools[0].name);
   EXPECT_EQ(a.tools[0].number, b.tools[0].number);
