@@ -93,11 +93,12 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
     if (cr) {
       if (cr->value == 0) raise(ctx, 14040, "CR=0", cr->column);
       if (!(std::abs(cr->value) <= kMaxAddressValue)) raise(ctx, 12160, "CR outside the control's value range", cr->column);
-      result = geometry::arc_from_radius(start, end, cr->value * unit, cw, plane);
+      result = geometry::arc_from_radius(start, end, cr->value * unit, cw, plane, {}, turns);
     } else if (ar && has_center) {
-      result = geometry::arc_from_angle_and_center(start, center, ar->value * std::numbers::pi / 180.0, cw, plane);
+      result = geometry::arc_from_angle_and_center(start, end, center, ar->value * std::numbers::pi / 180.0, cw, plane,
+                                                   turns);
     } else if (ar) {
-      result = geometry::arc_from_angle_and_end(start, end, ar->value * std::numbers::pi / 180.0, cw, plane);
+      result = geometry::arc_from_angle_and_end(start, end, ar->value * std::numbers::pi / 180.0, cw, plane, turns);
     } else if (has_center) {
       result = geometry::arc_from_center(start, end, center, cw, plane, turns, tolerance);
     } else {

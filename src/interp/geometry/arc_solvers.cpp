@@ -107,7 +107,7 @@ ArcResult arc_from_center(Vec3 start, Vec3 end, Vec3 centre, bool clockwise, Pla
 }
 
 ArcResult arc_from_radius(Vec3 start, Vec3 end, double cr_signed, bool clockwise, Plane plane,
-                          const ArcTolerance& tolerance) {
+                          const ArcTolerance& tolerance, int turns) {
   if (!finite(start) || !finite(end) || !std::isfinite(cr_signed)) return failure(14040, "non-finite value");
   if (cr_signed == 0.0) return failure(14040, "CR=0");
   const PlaneCoords pc{plane_axes(plane)};
@@ -129,11 +129,13 @@ ArcResult arc_from_radius(Vec3 start, Vec3 end, double cr_signed, bool clockwise
   const double side = (clockwise ? -1.0 : 1.0) * (cr_signed > 0.0 ? 1.0 : -1.0);
   const Vec2 centre = 0.5 * (a + b) + side * h * left_normal(chord / d);
   return build_plane_arc(pc, a, b, centre, pc.axial(start), pc.axial(end) - pc.axial(start), clockwise,
-                         0, false);
+                         turns, false);
 }
 
-ArcResult arc_from_angle_and_center(Vec3 start, Vec3 centre, double ar_rad, bool clockwise, Plane plane) {
-  if (!finite(start) || !finite(centre) || !std::isfinite(ar_rad)) return failure(14040, "non-finite value");
+ArcResult arc_from_angle_and_center(Vec3 start, Vec3 end, Vec3 centre, double ar_rad, bool clockwise, Plane plane,
+                                    int turns) {
+  if (!finite(start) || !finite(end) || !finite(centre) || !std::isfinite(ar_rad))
+    return failure(14040, "non-finite value");
   if (!(ar_rad > 0.0 && ar_rad <= kTwoPi + 1e-12)) {
     return failure(12160, "AR=" + fmt(ar_rad * 180.0 / std::numbers::pi) + " deg outside (0, 360]");
   }
@@ -142,14 +144,15 @@ ArcResult arc_from_angle_and_center(Vec3 start, Vec3 centre, double ar_rad, bool
   const Vec2 ra = a - c;
   const double radius = ra.norm();
   if (radius < kSamePoint) return failure(14040, "start point coincides with the centre (radius 0)");
+  const double sweep = ar_rad + kTwoPi * turns;
   ArcResult r;
   r.curve = std::make_shared<ArcCurve>(pc.to_space(c, pc.axial(start)), radius, pc.axes.first,
-                                       pc.axes.second, std::atan2(ra.y(), ra.x()),
-                                       clockwise ? -ar_rad : ar_rad, 0.0);
+                                       pc.axes.second, std::atan2(ra.y(), ra.x()), clockwise ? -sweep : sweep,
+                                       pc.axial(end) - pc.axial(start));
   return r;
 }
 
-ArcResult arc_from_angle_and_end(Vec3 start, Vec3 end, double ar_rad, bool clockwise, Plane plane) {
+ArcResult arc_from_angle_and_end(Vec3 start, Vec3 end, double ar_rad, bool clockwise, Plane plane, int turns) {
   if (!finite(start) || !finite(end) || !std::isfinite(ar_rad)) return failure(14040, "non-finite value");
   if (!(ar_rad > 0.0 && ar_rad < kTwoPi)) {
     return failure(12160, "AR=" + fmt(ar_rad * 180.0 / std::numbers::pi) + " deg outside (0, 360) with end point");
@@ -163,10 +166,11 @@ ArcResult arc_from_angle_and_end(Vec3 start, Vec3 end, double ar_rad, bool clock
   const double h = 0.5 * d / std::tan(0.5 * ar_rad);
   const Vec2 centre = 0.5 * (a + b) + (clockwise ? -1.0 : 1.0) * h * left_normal(chord / d);
   const Vec2 ra = a - centre;
+  const double sweep = ar_rad + kTwoPi * turns;
   ArcResult r;
   r.curve = std::make_shared<ArcCurve>(pc.to_space(centre, pc.axial(start)), ra.norm(), pc.axes.first,
-                                       pc.axes.second, std::atan2(ra.y(), ra.x()),
-                                       clockwise ? -ar_rad : ar_rad, pc.axial(end) - pc.axial(start));
+                                       pc.axes.second, std::atan2(ra.y(), ra.x()), clockwise ? -sweep : sweep,
+                                       pc.axial(end) - pc.axial(start));
   return r;
 }
 

@@ -36,15 +36,19 @@ ArcResult arc_from_center(Vec3 start, Vec3 end, Vec3 centre, bool clockwise, Pla
 
 // G2/G3 with CR=: CR > 0 sweeps <= 180 deg, CR < 0 more than 180 deg. start == end (full circle)
 // and CR = 0 -> 14040. A chord longer than 2|CR| by at most the tolerance is taken as a half circle;
-// longer -> 14040.
+// longer -> 14040. `turns` (TURN=) full revolutions are added before the end point (helix).
 ArcResult arc_from_radius(Vec3 start, Vec3 end, double cr_signed, bool clockwise, Plane plane,
-                          const ArcTolerance& tolerance = {});
+                          const ArcTolerance& tolerance = {}, int turns = 0);
 
-// G2/G3 with AR= and centre, no end point. AR outside (0, 2 pi] -> 12160. No helix.
-ArcResult arc_from_angle_and_center(Vec3 start, Vec3 centre, double ar_rad, bool clockwise, Plane plane);
+// G2/G3 with AR= and centre: the in-plane end follows from the angle; `end` only gives the
+// travel along the plane normal (a helix when it differs from the start's). AR outside
+// (0, 2 pi] -> 12160. `turns` full revolutions are added (TURN=).
+ArcResult arc_from_angle_and_center(Vec3 start, Vec3 end, Vec3 centre, double ar_rad, bool clockwise, Plane plane,
+                                    int turns = 0);
 
 // G2/G3 with AR= and end point. AR outside (0, 2 pi) -> 12160; start == end -> 14040.
-ArcResult arc_from_angle_and_end(Vec3 start, Vec3 end, double ar_rad, bool clockwise, Plane plane);
+// `turns` full revolutions are added (TURN=).
+ArcResult arc_from_angle_and_end(Vec3 start, Vec3 end, double ar_rad, bool clockwise, Plane plane, int turns = 0);
 
 // CIP: the arc from start through intermediate to end, in the 3-D plane of the three points.
 // Coincident or collinear points -> 14040.

@@ -138,13 +138,37 @@ TEST(ArcFromRadius, Alarms) {
 }
 
 TEST(ArcFromAngle, WithCentre) {
-  const ArcResult r = arc_from_angle_and_center({10, 0, 2}, {0, 0, 0}, 90 * kDeg, false, Plane::G17);
+  const ArcResult r = arc_from_angle_and_center({10, 0, 2}, {10, 0, 2}, {0, 0, 0}, 90 * kDeg, false, Plane::G17);
   ASSERT_TRUE(r.ok());
   expect_point(r.curve->end(), {0, 10, 2});
-  const ArcResult cw = arc_from_angle_and_center({10, 0, 0}, {0, 0, 0}, 30 * kDeg, true, Plane::G17);
+  const ArcResult cw = arc_from_angle_and_center({10, 0, 0}, {10, 0, 0}, {0, 0, 0}, 30 * kDeg, true, Plane::G17);
   expect_point(cw.curve->end(), {10 * std::cos(30 * kDeg), -10 * std::sin(30 * kDeg), 0});
-  EXPECT_EQ(arc_from_angle_and_center({10, 0, 0}, {0, 0, 0}, 0.0, true, Plane::G17).alarm, 12160);
-  EXPECT_EQ(arc_from_angle_and_center({10, 0, 0}, {0, 0, 0}, 7.0, true, Plane::G17).alarm, 12160);
+  EXPECT_EQ(arc_from_angle_and_center({10, 0, 0}, {10, 0, 0}, {0, 0, 0}, 0.0, true, Plane::G17).alarm, 12160);
+  EXPECT_EQ(arc_from_angle_and_center({10, 0, 0}, {10, 0, 0}, {0, 0, 0}, 7.0, true, Plane::G17).alarm, 12160);
+}
+
+// Fundamentals, "Helical interpolation (G2/G3, TURN)": the AR= and CR= forms take the normal
+// axis and TURN= as the centre form does. By hand: radius 10, quarter turn, Z -5:
+// length sqrt((10 pi / 2)^2 + 5^2) = 16.4845; with TURN=1 the sweep is 450 deg:
+// sqrt((10 * 2.5 pi)^2 + 5^2) = 78.6988 and the end is the same point.
+TEST(ArcFromAngle, HelixAndTurns) {
+  const ArcResult q = arc_from_angle_and_center({10, 0, 0}, {10, 0, -5}, {0, 0, 0}, 90 * kDeg, false, Plane::G17);
+  ASSERT_TRUE(q.ok());
+  expect_point(q.curve->end(), {0, 10, -5});
+  EXPECT_NEAR(q.curve->length(), 16.4845, 1e-4);
+  const ArcResult t = arc_from_angle_and_center({10, 0, 0}, {10, 0, -5}, {0, 0, 0}, 90 * kDeg, false, Plane::G17, 1);
+  ASSERT_TRUE(t.ok());
+  expect_point(t.curve->end(), {0, 10, -5});
+  EXPECT_NEAR(t.curve->length(), 78.6988, 1e-4);
+  const ArcResult e = arc_from_angle_and_end({10, 0, 0}, {0, 10, -5}, 90 * kDeg, false, Plane::G17, 1);
+  ASSERT_TRUE(e.ok());
+  expect_point(e.curve->end(), {0, 10, -5});
+  EXPECT_NEAR(e.curve->length(), 78.6988, 1e-4);
+  // CR=10 half circle with TURN=1: 540 deg, sqrt((10 * 3 pi)^2 + 4^2) = 94.3326.
+  const ArcResult c = arc_from_radius({10, 0, 0}, {-10, 0, -4}, 10.0, true, Plane::G17, {}, 1);
+  ASSERT_TRUE(c.ok());
+  expect_point(c.curve->end(), {-10, 0, -4});
+  EXPECT_NEAR(c.curve->length(), 94.3326, 1e-4);
 }
 
 TEST(ArcFromAngle, WithEndPoint) {

@@ -61,7 +61,7 @@ TEST(ArcRobustness, RandomArcInputsGiveACurveOrAnAlarm) {
     const ArcResult results[] = {
         arc_from_center(v(), v(), v(), cw, plane, i % 3, {}),
         arc_from_radius(v(), v(), u(rng), cw, plane),
-        arc_from_angle_and_center(v(), v(), u(rng), cw, plane),
+        arc_from_angle_and_center(v(), v(), v(), u(rng), cw, plane, i % 2),
         arc_from_angle_and_end(v(), v(), u(rng), cw, plane),
         arc_through_point(v(), v(), v()),
         arc_tangent(v(), v(), v(), plane),
