@@ -30,26 +30,32 @@ std::filesystem::path binary_folder() {
 }  // namespace
 
 std::optional<std::filesystem::path> standard_cycles_folder() {
-  const auto bin = binary_folder();
-  if (bin.empty()) return std::nullopt;
-  if (is_folder(bin / "cycles")) return bin / "cycles";
-  const auto installed = (bin / DRYCUT_INSTALLED_CYCLES_RELATIVE).lexically_normal();
-  if (is_folder(installed)) return installed;
-  return std::nullopt;
+  // Looked up once per process (every program run of `regress`, `calibrate` or `experiment` asks):
+  // the binary does not move, and a missing folder is reported once, not once per program.
+  static const std::optional<std::filesystem::path> folder = [] {
+    std::optional<std::filesystem::path> found;
+    const auto bin = binary_folder();
+    if (!bin.empty()) {
+      const auto installed = (bin / DRYCUT_INSTALLED_CYCLES_RELATIVE).lexically_normal();
+      if (is_folder(bin / "cycles")) found = bin / "cycles";
+      else if (is_folder(installed)) found = installed;
+    }
+    if (!found) {
+      // A binary copied away from its build or install tree: say why CYCLE81 & co. are missing.
+      spdlog::warn("drycut's standard cycles folder was not found beside the binary (<bindir>/cycles or "
+                   "<bindir>/" DRYCUT_INSTALLED_CYCLES_RELATIVE "); standard cycles called by the program will "
+                   "raise 14011 (give their folder with --search-path)");
+    }
+    return found;
+  }();
+  return folder;
 }
 
 std::vector<std::filesystem::path> search_path_with_cycles(const std::vector<std::string>& user_folders,
                                                            bool use_standard) {
   std::vector<std::filesystem::path> dirs(user_folders.begin(), user_folders.end());
-  if (!use_standard) return dirs;
-  if (auto cycles = standard_cycles_folder()) {
-    dirs.push_back(*cycles);
-  } else {
-    // A binary copied away from its build or install tree: say why CYCLE81 & co. are missing.
-    spdlog::warn("drycut's standard cycles folder was not found beside the binary (<bindir>/cycles or "
-                 "<bindir>/" DRYCUT_INSTALLED_CYCLES_RELATIVE "); standard cycles called by the program will "
-                 "raise 14011 (give their folder with --search-path)");
-  }
+  if (use_standard)
+    if (auto cycles = standard_cycles_folder()) dirs.push_back(*cycles);
   return dirs;
 }
 

@@ -15,6 +15,8 @@
 
 namespace drycut::app {
 
+// Looked up once per process; when no folder is found, one warning says so (a binary copied
+// away from its tree would otherwise fail every cycle call with an unexplained 14011).
 std::optional<std::filesystem::path> standard_cycles_folder();
 
 // The user's folders followed by the standard cycles folder (when found and `use_standard`).
