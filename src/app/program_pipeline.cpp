@@ -10,6 +10,7 @@
 #include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/pipelined_sink.hpp"
 #include "machine/tool_table_file.hpp"
 #include "parser/program_loader.hpp"
 #include "report/progress_display.hpp"
@@ -64,6 +65,18 @@ machine::MachineProfile load_machine(const ProgramOptions& options) {
   return profile;
 }
 
+namespace {
+
+// The producer's state as it hands an element to the worker (interp/pipelined_sink.hpp): what an
+// alarm raised downstream on that element cuts the run's records back to.
+struct ProducerMark {
+  size_t diagnostics = 0;
+  uint64_t blocks = 0;
+  uint64_t lines = 0;
+};
+
+}  // namespace
+
 PipelineOutcome run_program(const ProgramOptions& options, const machine::MachineProfile& profile,
                             interp::ElementSink& sink) {
   PipelineOutcome outcome;
@@ -72,7 +85,11 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
                                outcome.diagnostics);
   loader.open_main(options.program);  // UsageError when the file cannot be read
 
-  interp::Interpreter interpreter(profile, sink, outcome.diagnostics);
+  // Interpretation on this thread, everything after it on a worker: the same stream, in parallel.
+  interp::PipelinedSink<ProducerMark> pipe(sink, [&] {
+    return ProducerMark{outcome.diagnostics.items().size(), loader.blocks_executed(), loader.steps()};
+  });
+  interp::Interpreter interpreter(profile, pipe, outcome.diagnostics);
   interp::InterpreterStateView state_view(interpreter, profile);
   loader.set_state_view(&state_view);  // $P_/$AA_/$TC_ reads see the interpreted state
   parser::Block block;
@@ -85,7 +102,9 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
       if (interpreter.ended()) break;
     }
   } catch (const AlarmError& e) {
-    outcome.diagnostics.report(e.alarm());
+    // The elements already handed over come from earlier blocks: an alarm they raise came first.
+    pipe.drain();
+    if (!pipe.failure()) outcome.diagnostics.report(e.alarm());
     outcome.alarm = true;
   }
   try {
@@ -93,11 +112,20 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
     interpreter.finish();
   } catch (const AlarmError& e) {
     // The control stops at the first alarm: one raised while finishing after it is a follow-up.
-    if (!outcome.alarm) outcome.diagnostics.report(e.alarm());
+    if (!outcome.alarm && !pipe.failure()) outcome.diagnostics.report(e.alarm());
     outcome.alarm = true;
   }
   outcome.blocks = loader.blocks_executed();
   outcome.lines = loader.steps();
+  if (const auto& failure = pipe.failure()) {
+    // Stopped downstream: the run ends at that element's block, as run sequentially; what the
+    // interpreter did ahead of it (its warnings, its blocks) did not happen.
+    outcome.diagnostics.truncate(failure->mark.diagnostics);
+    outcome.diagnostics.report(failure->error.alarm());
+    outcome.alarm = true;
+    outcome.blocks = failure->mark.blocks;
+    outcome.lines = failure->mark.lines;
+  }
   outcome.programs_used = loader.programs_used();
   outcome.commands_used = loader.commands_used();
   return outcome;

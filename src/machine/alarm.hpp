@@ -1,6 +1,7 @@
 #pragma once
 // One alarm type for the whole program (parser, interpreter, planner): a SINUMERIK-style
 // number, a severity, the text, where it happened and the block text.
+#include <cstddef>
 #include <exception>
 #include <string>
 #include <vector>
@@ -57,6 +58,10 @@ class Diagnostics {
     report(std::move(a));
   }
   const std::vector<Alarm>& items() const { return items_; }
+  // Forgets everything reported after the first `count` items.
+  void truncate(size_t count) {
+    if (count < items_.size()) items_.erase(items_.begin() + static_cast<std::ptrdiff_t>(count), items_.end());
+  }
   bool has_alarms() const;
   size_t warning_count() const;
 

@@ -1,0 +1,191 @@
+#pragma once
+// Hands the element stream to a worker thread, so that reading and interpreting the program (the
+// calling thread) overlaps with what follows it (compensation, compressor, smoothing, planner on
+// the worker). The control does the same: its preprocessing runs ahead of the main run. On a
+// two-core machine this makes `drycut run` on a CAM program up to ~1.8x faster in wall time;
+// the element stream, and so every planned number, is the same as without it.
+//
+// How it keeps the sequential contract (an alarm stops the run at the block that caused it):
+// - Elements go over in batches of kBatch (one lock per batch, not per element), at most
+//   kBatchesInFlight of them queued: the producer blocks when the worker falls behind, so memory
+//   stays bounded and the producer runs at most kBatch·(kBatchesInFlight + 1) elements ahead.
+// - With every element the producer's MARK is taken (a snapshot the caller defines: how many
+//   warnings it had reported, how many blocks it had run). When the downstream raises an alarm on
+//   an element, the worker stops, keeps the alarm and that element's mark, and drops the rest;
+//   the producer's next consume() throws the alarm, so the interpreter stops as it would have
+//   (only a few blocks later). The caller then cuts its own records back to the mark: warnings
+//   of the blocks the producer ran ahead are not the run's.
+// - An alarm of the producer itself comes from a later block than every element it handed over:
+//   drain() lets the worker finish those first, and an alarm they raise takes precedence.
+// - Any other exception (I/O, bad_alloc) on the worker is rethrown to the producer as it is.
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "interp/path_element.hpp"
+#include "machine/alarm.hpp"
+
+namespace drycut::interp {
+
+template <class Mark>
+class PipelinedSink final : public ElementSink {
+ public:
+  static constexpr size_t kBatch = 64;
+  static constexpr size_t kBatchesInFlight = 8;
+
+  struct Failure {
+    AlarmError error;
+    Mark mark;  // the producer's mark when it handed over the element that raised it
+  };
+
+  PipelinedSink(ElementSink& downstream, std::function<Mark()> mark)
+      : downstream_(downstream), mark_(std::move(mark)), worker_([this] { work(); }) {}
+  PipelinedSink(const PipelinedSink&) = delete;
+  PipelinedSink& operator=(const PipelinedSink&) = delete;
+  ~PipelinedSink() override { stop_worker(); }
+
+  void consume(PathElement&& element) override {
+    if (failed_.load(std::memory_order_acquire)) {
+      // Thrown once; what the producer still sends while it winds down (its finish) is dropped.
+      if (std::exchange(delivered_, true)) return;
+      rethrow_fatal();
+      throw failure_->error;
+    }
+    batch_.elements.push_back(std::move(element));
+    batch_.marks.push_back(mark_());
+    if (batch_.elements.size() >= kBatch) hand_over();
+  }
+
+  // Hands over what is left, waits for the worker to end, then finishes the downstream on this
+  // thread. After a downstream alarm the downstream is still finished (it hands on what it holds,
+  // nothing written is lost); an alarm of that flush is a follow-up and dropped.
+  void finish() override {
+    hand_over();
+    stop_worker();
+    rethrow_fatal();
+    if (failure_) {
+      try {
+        downstream_.finish();
+      } catch (const AlarmError&) {
+      }
+      return;
+    }
+    downstream_.finish();
+  }
+
+  // Waits until the worker has consumed every element handed to it so far (the partial batch
+  // included). Afterwards failure() says whether one of them raised an alarm.
+  void drain() {
+    hand_over();
+    std::unique_lock lock(mutex_);
+    idle_.wait(lock, [this] { return queue_.empty() && !busy_; });
+    lock.unlock();
+    if (failed_.load(std::memory_order_acquire)) delivered_ = true;
+    rethrow_fatal();
+  }
+
+  // The downstream alarm that stopped the stream, once the worker has stopped on it.
+  const std::optional<Failure>& failure() const { return failure_; }
+
+ private:
+  struct Batch {
+    std::vector<PathElement> elements;
+    std::vector<Mark> marks;
+  };
+
+  void hand_over() {
+    if (batch_.elements.empty() || !worker_.joinable()) return;
+    std::unique_lock lock(mutex_);
+    room_.wait(lock, [this] { return queue_.size() < kBatchesInFlight; });
+    queue_.push_back(std::move(batch_));
+    lock.unlock();
+    work_ready_.notify_one();
+    batch_ = Batch{};
+    batch_.elements.reserve(kBatch);
+    batch_.marks.reserve(kBatch);
+  }
+
+  void work() {
+    for (;;) {
+      Batch batch;
+      {
+        std::unique_lock lock(mutex_);
+        work_ready_.wait(lock, [this] { return !queue_.empty() || closing_; });
+        if (queue_.empty()) return;
+        batch = std::move(queue_.front());
+        queue_.pop_front();
+        busy_ = true;
+      }
+      room_.notify_one();
+      if (!stopped_) consume_batch(batch);
+      {
+        std::lock_guard lock(mutex_);
+        busy_ = false;
+      }
+      idle_.notify_all();
+    }
+  }
+
+  void consume_batch(Batch& batch) {
+    for (size_t i = 0; i < batch.elements.size(); ++i) {
+      try {
+        downstream_.consume(std::move(batch.elements[i]));
+      } catch (const AlarmError& e) {
+        failure_.emplace(Failure{e, batch.marks[i]});
+        stopped_ = true;
+        failed_.store(true, std::memory_order_release);
+        return;
+      } catch (...) {
+        fatal_ = std::current_exception();
+        stopped_ = true;
+        failed_.store(true, std::memory_order_release);
+        return;
+      }
+    }
+  }
+
+  void rethrow_fatal() {
+    if (!failed_.load(std::memory_order_acquire)) return;
+    if (auto fatal = std::exchange(fatal_, nullptr)) std::rethrow_exception(fatal);
+  }
+
+  void stop_worker() {
+    if (!worker_.joinable()) return;
+    {
+      std::lock_guard lock(mutex_);
+      closing_ = true;
+    }
+    work_ready_.notify_one();
+    worker_.join();
+  }
+
+  ElementSink& downstream_;
+  std::function<Mark()> mark_;
+  Batch batch_;  // the producer's batch being filled
+
+  bool delivered_ = false;  // the producer has been told of the failure
+
+  std::mutex mutex_;  // guards the queue and the two flags after it
+  std::condition_variable work_ready_, room_, idle_;
+  std::deque<Batch> queue_;
+  bool busy_ = false, closing_ = false;
+
+  // Written by the worker only, before it sets failed_ (release); the producer reads them after
+  // seeing failed_ (acquire).
+  bool stopped_ = false;  // the worker drops further batches
+  std::optional<Failure> failure_;
+  std::exception_ptr fatal_;
+  std::atomic<bool> failed_{false};
+
+  std::thread worker_;  // last: started after everything it uses is constructed
+};
+
+}  // namespace drycut::interp
