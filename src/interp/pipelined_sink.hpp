@@ -38,7 +38,7 @@ namespace drycut::interp {
 template <class Mark>
 class PipelinedSink final : public ElementSink {
  public:
-  static constexpr size_t kBatch = 64;
+  static constexpr size_t kBatch = 128;
   static constexpr size_t kBatchesInFlight = 8;
 
   struct Failure {

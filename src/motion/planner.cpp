@@ -355,6 +355,14 @@ double Planner::extend(RampAnchor& anchor, double v_here, const Segment& seg) {
   return ramp_reach(v_here, seg.length, seg.ramp);
 }
 
+bool Planner::reaches(const RampAnchor& anchor, double v_here, const Segment& seg, double target) {
+  if (target <= v_here) return true;
+  if (ramp_distance(v_here, target, seg.ramp) <= seg.length) return true;  // restarting here
+  if (anchor.distance <= 0) return false;
+  if (target <= anchor.velocity) return true;
+  return ramp_distance(anchor.velocity, target, min_limits(anchor.limits, seg.ramp)) <= anchor.distance + seg.length;
+}
+
 void Planner::backward_pass(bool full) {
   const size_t last = nodes_.size() - 1;
   Node& end = nodes_[last];
@@ -366,16 +374,20 @@ void Planner::backward_pass(bool full) {
     Node& node = nodes_[i];
     const Node& next = nodes_[i + 1];
     RampAnchor anchor = next.anchor;
-    const double reach = extend(anchor, next.backward, segments_[i]);
-    double b;
-    Limit kind;
-    if (node.limit <= reach) {
-      b = node.limit;
-      kind = node.limit_kind;
+    // The node's own limit binds where the ramp reaches it (most nodes off the braking ramp):
+    // checked first, as a distance, so the reach is only solved for nodes on the ramp.
+    double b = node.limit;
+    Limit kind = node.limit_kind;
+    if (reaches(anchor, next.backward, segments_[i], node.limit)) {
       anchor = {};
     } else {
-      b = reach;
-      kind = next.backward_kind;
+      const double reach = extend(anchor, next.backward, segments_[i]);
+      if (node.limit <= reach) {
+        anchor = {};
+      } else {
+        b = reach;
+        kind = next.backward_kind;
+      }
     }
     const bool settled = !full && b == node.backward && kind == node.backward_kind && b == node.limit;
     node.backward = b;
@@ -415,7 +427,9 @@ void Planner::commit_front() {
   for (size_t k = 0; k < w.segment_count; ++k) {
     const Segment& seg = segments_[k];
     const Node& next = nodes_[k + 1];
-    const double reach = extend(front_anchor_, v, seg);
+    // A line segment whose end bound is reachable needs no reach (only arcs' envelopes use it).
+    const bool bound_reached = !seg.envelope && reaches(front_anchor_, v, seg, next.backward);
+    const double reach = bound_reached ? next.backward : extend(front_anchor_, v, seg);
     const RampAnchor rise = front_anchor_;
     double v1;
     Limit k1;

@@ -195,6 +195,9 @@ class Planner : public interp::ElementSink {
   void emit_rest_samples(const interp::PathElement& element, double duration);
   void validate(const interp::PathElement& element) const;
   static double extend(RampAnchor& anchor, double v_here, const Segment& seg);
+  // Whether extend() would reach `target` (its result >= target), without solving for the
+  // reach: the inverse ramp (a distance) costs at most a square root, the reach a cube root.
+  static bool reaches(const RampAnchor& anchor, double v_here, const Segment& seg, double target);
 
   machine::MachineProfile profile_;  // a copy: callers may pass a temporary
   PlanObserver& observer_;
