@@ -59,7 +59,7 @@ constexpr std::array kStatements{
     Row{"GOTOS", M, "back to the first block of the program (after its definitions)"},
     Row{"IF cond GOTOx target", M, "conditional jump; several in one block: the first whose condition holds (GOTOF :30 jumps to main block 30)"},
     Row{"CASE expr OF c GOTOx l ... DEFAULT GOTOx l", M, "multi-way jump"},
-    Row{"REPEAT start [end] P=n / REPEATB label P=n", M, "program section repetition"},
+    Row{"REPEAT start [end] P=n / REPEATB label P=n / ENDLABEL:", M, "program section repetition"},
     Row{"CALL BLOCK start TO end", M, "the program section between the labels runs once (as REPEAT start end)"},
     Row{"CALL \"PROG\" BLOCK start TO end", M, "that section of program PROG runs, then the call returns"},
     Row{"REDEF name attributes", M, "new access rights, preprocessing stop, initialisation or limits of a name (definition files): accepted, nothing changes"},

@@ -395,16 +395,22 @@ void ProgramLoader::execute_case() {
 std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label) {
   Frame& f = *frames_.back();
   if (auto it = f.labels.find(label); it != f.labels.end()) return it->second;
-  // Not passed yet: search the whole file with a parser of its own (the current line's parse
-  // stays valid), then read on where reading was.
+  // Not passed yet: search the whole file.
+  return find_label_between(label, LinePosition{}, UINT64_MAX);
+}
+
+std::optional<LinePosition> ProgramLoader::find_label_between(const std::string& label, LinePosition from,
+                                                               uint64_t before) {
+  // A parser of its own (the current line's parse stays valid); reading goes on where it was.
+  Frame& f = *frames_.back();
   const LinePosition resume = f.reader.tell();
   std::optional<LinePosition> found;
-  f.reader.seek(LinePosition{});
+  f.reader.seek(from);
   RawLine raw;
   std::string line;
   ParsedLine parsed;
   LineParser parser;
-  while (!found && f.reader.next(raw)) {
+  while (!found && f.reader.next(raw) && raw.position.offset < before) {
     if (raw.too_long) continue;
     decode_line_to_utf8(raw.bytes, line);
     if (is_blank_or_comment(line)) continue;
@@ -420,8 +426,9 @@ std::optional<LinePosition> ProgramLoader::find_label_position(const std::string
 }
 
 void ProgramLoader::execute_repeat_section() {
-  // REPEAT start P=n: lines from label `start` up to this REPEAT line; REPEAT start end P=n:
-  // from `start` to the line labelled `end`, inclusive; REPEATB label P=n: that one line.
+  // REPEAT start P=n: lines from label `start` up to the first line labelled ENDLABEL after it,
+  // inclusive, or without one up to this REPEAT line; REPEAT start end P=n: from `start` to the
+  // line labelled `end`, inclusive; REPEATB label P=n: that one line.
   // The section runs n more times (P=1 when not written), then reading goes on after REPEAT.
   Frame& f = *frames_.back();
   double passes = 1;
@@ -438,8 +445,13 @@ void ProgramLoader::execute_repeat_section() {
   const auto start = find_label_position(start_label);
   if (!start) throw LineError(14080, column, start_label);
   r.start = *start;
-  if (one_block || !end_label.empty()) {
-    const auto end = one_block ? start : find_label_position(end_label);
+  // ENDLABEL ends a section programmed before the REPEAT line between its start and the REPEAT
+  // line; one after it (a forward start label) anywhere after its start.
+  std::optional<LinePosition> end_line;
+  if (!one_block && end_label.empty())
+    end_line = find_label_between("ENDLABEL", r.start, r.start.offset < repeat_line.offset ? repeat_line.offset : UINT64_MAX);
+  if (one_block || !end_label.empty() || end_line) {
+    const auto end = one_block ? start : end_line ? end_line : find_label_position(end_label);
     if (!end) throw LineError(14080, column, end_label);
     // The section ends after the end line: find where the next line starts.
     f.reader.seek(*end);

@@ -33,7 +33,7 @@ TEST(LanguageTable, NothingOfTheLanguageIssueIsRefused) {
   const auto features = drycut::parser::language_features();
   for (const char* s : {"CASE expr OF c GOTOx l ... DEFAULT GOTOx l", "EXTERN name(types)", "DEFINE name AS text",
                         "SETAL(n[, text])", "ID=n WHEN/WHENEVER/FROM/EVERY ... DO ...",
-                        "SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", "REPEAT start [end] P=n / REPEATB label P=n"}) {
+                        "SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", "REPEAT start [end] P=n / REPEATB label P=n / ENDLABEL:"}) {
     bool found = false;
     for (const auto& f : features)
       if (f.name == s) found = f.support != Support::Unknown;
