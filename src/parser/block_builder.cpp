@@ -169,6 +169,15 @@ class ProgramLoader::BlockBuilder {
       l_.assign_r_parameter(std::stod(std::string(item.name.substr(1))), l_.eval(item.expr), item.column);
       return;
     }
+    if (item.name == "T" && item.index_count == 0) {
+      // T=<STRING expression> under tool management (T=_NAME in a tool-change macro): a tool name.
+      const Value v = l_.eval_value(item.expr);
+      if (v.is_text()) {
+        out_.tool_name = v.text;
+        has_words_ = true;
+        return;
+      }
+    }
     if (axis_word(item)) return;
     if (item.name == "PO") {
       polynomial(item);

@@ -1,6 +1,7 @@
 // Control flow of the loader: structured loops and IF (PGA Job Planning "Program flow control"),
 // jumps GOTOF/GOTOB/GOTO/GOTOC to labels, block numbers or computed targets, CASE, and program
 // section repetition REPEAT/REPEATB.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -237,7 +238,7 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
   if (!target.label.empty()) {
     // GOTOF NAME: a STRING variable holding the label, or the label itself.
     if (Variable* v = find_variable(target.label); v && v->type() == DataType::String && v->rank() == 0) {
-      jump_to(direction, upper_ascii(v->get(0).text), std::nullopt, target.column);
+      jump_to_value(direction, v->get(0), target.column);
       return;
     }
   }
@@ -245,9 +246,18 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
 }
 
 void ProgramLoader::jump_to_value(JumpDirection direction, const Value& target, uint32_t column) {
-  // A computed target: a string is a label, a number a block number.
-  if (target.is_number()) jump_to(direction, {}, block_number_of(target.number), column);
-  else jump_to(direction, upper_ascii(target.text), std::nullopt, column);
+  // A computed target: a number is a block number; a string a label, or a block number when it
+  // reads "N<digits>" (Job Planning: the STRING stands for a jump marker or a block number; a
+  // label cannot look like that, its first two characters are letters or underscores).
+  if (target.is_number()) {
+    jump_to(direction, {}, block_number_of(target.number), column);
+    return;
+  }
+  const std::string text = upper_ascii(target.text);
+  const bool block_number = text.size() > 1 && text[0] == 'N' &&
+                            std::all_of(text.begin() + 1, text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (block_number && text.size() <= 19) jump_to(direction, {}, std::stoll(text.substr(1)), column);
+  else jump_to(direction, text, std::nullopt, column);
 }
 
 void ProgramLoader::jump_to_start() {
