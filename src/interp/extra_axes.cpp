@@ -98,17 +98,19 @@ void ExtraAxes::move(size_t i, double travel) {
 
 std::string ExtraAxes::set_feed_group(const std::vector<std::string>& names) {
   std::fill(in_group_.begin(), in_group_.end(), false);
-  geometry_in_group_ = names.empty();
+  geometry_group_ = names.empty() ? 7 : 0;
   for (const auto& n : names) {
     if (n == "X" || n == "Y" || n == "Z") {
-      geometry_in_group_ = true;
+      geometry_group_ |= static_cast<uint8_t>(1u << (n[0] - 'X'));
     } else if (const int k = index(n); k >= 0) {
       in_group_[static_cast<size_t>(k)] = true;
     } else if (!n.empty()) {
       return n;
     }
   }
-  if (std::none_of(in_group_.begin(), in_group_.end(), [](bool b) { return b; })) geometry_in_group_ = true;
+  // No axis of the group left (FGROUP of unknown names only): the default group.
+  if (geometry_group_ == 0 && std::none_of(in_group_.begin(), in_group_.end(), [](bool b) { return b; }))
+    geometry_group_ = 7;
   return {};
 }
 

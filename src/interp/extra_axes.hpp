@@ -56,7 +56,8 @@ class ExtraAxes {
 
   // FGROUP: `names` as written; returns the first name that is not an axis, or empty.
   std::string set_feed_group(const std::vector<std::string>& names);
-  bool geometry_in_feed_group() const { return geometry_in_group_; }
+  // The geometry axes in the group: bit 0 X, bit 1 Y, bit 2 Z (7: all, the default).
+  uint8_t geometry_feed_axes() const { return geometry_group_; }
   bool in_feed_group(size_t i) const { return in_group_[i]; }
 
   // FA[ax]: the positioning feed in units per s; MD32060 until programmed.
@@ -73,7 +74,7 @@ class ExtraAxes {
   std::vector<machine::AxisData> axes_;
   std::vector<double> position_;
   std::vector<bool> in_group_;
-  bool geometry_in_group_ = true;
+  uint8_t geometry_group_ = 7;
   std::vector<double> positioning_feed_;
   std::vector<std::string> running_;
 };

@@ -504,6 +504,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.dynamics.group = state_.dynamic_group;
   e.dynamics.limits = state_.axis_limits;
   e.dynamics.exact_stop_this_block = ctx.exact_stop;
+  e.geometry_feed_axes = extra_axes_.geometry_feed_axes();
   e.corner.program_level = ctx.block.program_level;
   e.compensation.side = state_.compensation;
   // A mirror in the plane swaps the sides: G41 on the programmed contour is right of the mirrored one.

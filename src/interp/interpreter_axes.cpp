@@ -309,7 +309,6 @@ std::vector<ExtraAxisMove> Interpreter::take_extra_axis_moves(BlockContext& ctx)
 void Interpreter::attach_extra_axes(BlockContext& ctx, PathElement& e, std::vector<ExtraAxisMove> moves) {
   if (moves.empty()) return;
   e.extra_axes = std::move(moves);
-  e.geometry_in_feed_group = extra_axes_.geometry_in_feed_group();
   // F refers to the feed group's length (G93: the block time fills the whole length).
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), e.curve->end() - e.curve->start());
 }

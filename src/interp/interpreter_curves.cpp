@@ -19,7 +19,7 @@ PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   e.rapid = state_.motion == MotionMode::Rapid;
   e.label = e.rapid ? "G0" : std::string(motion_mode_name(state_.motion));
   e.curve = std::make_shared<geometry::LineCurve>(position_, target);
-  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.curve->length(), target - position_);
+  if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), target - position_);
   return e;
 }
 
@@ -116,7 +116,7 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
     if (!mapped) raise(ctx, kUnsupported, "circle under unequal scale factors in its plane (SCALE/ASCALE)");
     e.curve = *mapped;
   }
-  e.feed_mm_s = feed_mm_s(ctx, e.curve->length(), target.machine - position_);
+  e.feed_mm_s = feed_mm_s(ctx, e.path_length(), target.machine - position_);
   return e;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "interp/geometry/curve.hpp"
+#include "interp/geometry/projected_length.hpp"
 #include "machine/dynamic_groups.hpp"
 #include "machine/source_location.hpp"
 
@@ -148,7 +149,8 @@ struct PathElement {
   BlockRef source;               // the block it belongs to
   // Synchronized axes beyond X, Y, Z (docs/axes.md); empty for most elements.
   std::vector<ExtraAxisMove> extra_axes;
-  bool geometry_in_feed_group = true;  // FGROUP names a geometry axis (the default group)
+  // The geometry axes in the feed group (FGROUP): bit 0 X, bit 1 Y, bit 2 Z; 7 is the default.
+  uint8_t geometry_feed_axes = 7;
   std::vector<PositioningMove> positioning;  // Positioning
   std::vector<std::string> wait_axes;        // AxisWait: the axes waited for; empty = every axis
   // The compressor (src/interp/block_compressor.hpp): the mode active for the block, whether the
@@ -172,13 +174,16 @@ struct PathElement {
   ContourCornerRequest corner;
 
   // The length the path feed F refers to and the planner plans along (FGROUP, PGA Fundamentals
-  // "Feedrate (G93, G94, G95, F, FGROUP)"): the geometry's length if the geometry axes are in the
-  // group, with every grouped extra axis's travel added as a further coordinate. A block moving
-  // no grouped axis but others (`G1 A90 F1000`) takes F for the axes it moves.
+  // "Feedrate (G93, G94, G95, F, FGROUP)"): the geometry's length counted on the grouped geometry
+  // axes (all three by default; FGROUP(X,Y) on a helix: its length in the plane), with every
+  // grouped extra axis's travel added as a further coordinate. A block moving no grouped axis but
+  // others (`G1 A90 F1000`, or `G1 Z-5` under FGROUP(X,Y)) takes F for the axes it moves.
   double path_length() const {
     const double geometry = curve ? curve->length() : 0.0;
-    if (extra_axes.empty()) return geometry;
-    double grouped = geometry_in_feed_group ? geometry * geometry : 0.0, all = geometry * geometry;
+    if (extra_axes.empty() && geometry_feed_axes == 7) return geometry;
+    const double grouped_geometry =
+        geometry_feed_axes == 7 ? geometry : curve ? geometry::projected_length(*curve, geometry_feed_axes) : 0.0;
+    double grouped = grouped_geometry * grouped_geometry, all = geometry * geometry;
     for (const auto& m : extra_axes) {
       all += m.travel * m.travel;
       if (m.in_feed_group) grouped += m.travel * m.travel;

@@ -69,14 +69,17 @@ TEST(ExtraAxes, LinearAxisTakesTheGeometryUnitRotaryDoesNot) {
 
 TEST(ExtraAxes, FeedGroup) {
   ExtraAxes axes(profile_with(true));
-  EXPECT_TRUE(axes.geometry_in_feed_group());
+  EXPECT_EQ(axes.geometry_feed_axes(), 7);
   EXPECT_EQ(axes.set_feed_group({"X", "Y", "C"}), "");
-  EXPECT_TRUE(axes.geometry_in_feed_group());
+  EXPECT_EQ(axes.geometry_feed_axes(), 0b011);  // X and Y: Z follows
   EXPECT_TRUE(axes.in_feed_group(0));
+  EXPECT_EQ(axes.set_feed_group({"Z"}), "");
+  EXPECT_EQ(axes.geometry_feed_axes(), 0b100);
+  EXPECT_FALSE(axes.in_feed_group(0));
   EXPECT_EQ(axes.set_feed_group({"C"}), "");
-  EXPECT_FALSE(axes.geometry_in_feed_group());
+  EXPECT_EQ(axes.geometry_feed_axes(), 0);
   EXPECT_EQ(axes.set_feed_group({}), "");
-  EXPECT_TRUE(axes.geometry_in_feed_group());
+  EXPECT_EQ(axes.geometry_feed_axes(), 7);
   EXPECT_FALSE(axes.in_feed_group(0));
   EXPECT_EQ(axes.set_feed_group({"Q1"}), "Q1");
 }
