@@ -89,12 +89,20 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
 }
 
 std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<const Value> indices) const {
-  // $TC_DPn[t, d]: edge d of tool t; DP3 = length 1, DP6 = radius.
+  // $TC_DPn[t, d]: edge d of tool t; DP3 = length 1, DP6 = radius, DP12/DP15 their wear.
   if (indices.size() != 2 || !indices[0].is_number() || !indices[1].is_number()) return std::nullopt;
   const machine::Tool* tool = interpreter_.tools().find(parser::number_to_text(indices[0].number));
   if (!tool) return 0.0;
-  for (const auto& e : tool->edges)
-    if (e.d == indices[1].number) return parameter == 6 ? e.radius_mm : parameter == 3 ? e.length_mm : 0.0;
+  for (const auto& e : tool->edges) {
+    if (e.d != indices[1].number) continue;
+    switch (parameter) {
+      case 3: return e.length_mm - e.length_wear_mm;
+      case 6: return e.radius_mm - e.radius_wear_mm;
+      case 12: return e.length_wear_mm;
+      case 15: return e.radius_wear_mm;
+      default: return 0.0;
+    }
+  }
   return 0.0;
 }
 
@@ -143,6 +151,8 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));
   if (n == "$TC_DP3") return number(tool_datum(3, indices));
   if (n == "$TC_DP6") return number(tool_datum(6, indices));
+  if (n == "$TC_DP12") return number(tool_datum(12, indices));
+  if (n == "$TC_DP15") return number(tool_datum(15, indices));
   if (n == "$TC_GETT" && indices.size() == 1) {
     if (const machine::Tool* t = tools.find(indices[0].text)) return Value(static_cast<double>(t->number));
     return Value(-1.0);

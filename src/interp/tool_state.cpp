@@ -135,8 +135,21 @@ bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
   if (parameter < 1 || parameter > 25) return false;
   machine::ToolEdge* edge = edge_for_write(t, d);
   if (!edge) return false;
-  if (parameter == 3) edge->length_mm = value;
-  if (parameter == 6) edge->radius_mm = value;
+  // The control adds each wear value to its geometry value (Fundamentals, "Tool offset data":
+  // DP12 wear of length 1, DP15 wear of the radius).
+  switch (parameter) {
+    case 3: edge->length_mm = value + edge->length_wear_mm; break;
+    case 6: edge->radius_mm = value + edge->radius_wear_mm; break;
+    case 12:
+      edge->length_mm += value - edge->length_wear_mm;
+      edge->length_wear_mm = value;
+      break;
+    case 15:
+      edge->radius_mm += value - edge->radius_wear_mm;
+      edge->radius_wear_mm = value;
+      break;
+    default: break;
+  }
   // The active edge takes the new value at once (the control re-reads it with the next D or
   // motion; drycut applies it with the next motion as for any length change).
   if (has_tool() && edge_ == d && find(*active_) && find(*active_)->number == t) {

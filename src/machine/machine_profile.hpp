@@ -64,9 +64,13 @@ struct SmoothingData {
 
 struct ToolEdge {
   int d = 1;               // D number
-  double radius_mm = 0;    // cutter radius (tool radius compensation)
-  double length_mm = 0;    // geometry length 1: tool length compensation along the plane normal
+  double radius_mm = 0;    // cutter radius (tool radius compensation): geometry + wear
+  double length_mm = 0;    // length 1, geometry + wear: tool length compensation along the plane normal
   int teeth = 0;           // $TC_DPNT number of teeth (tooth feed G95 FZ); 0 = not known
+  // The wear parts of the two ($TC_DP15, $TC_DP12) as the program wrote them (an imported tool
+  // table already holds the sums).
+  double radius_wear_mm = 0;
+  double length_wear_mm = 0;
 };
 
 struct Tool {
