@@ -83,6 +83,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
     warn_once(ctx, "POS/POSA of a geometry axis in a block with path axes (it moves with the path, at the path feed)", 0);
   ctx.simple = is_simple_block(block);
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
+  if (block.main_run_read) emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
   apply_system_writes(block);
   apply_g_words(ctx);
   apply_commands(ctx);
@@ -704,15 +705,18 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   emit_block_end(ctx);
 }
 
+void Interpreter::emit_preprocessing_stop(BlockContext& ctx, const char* label) {
+  // The path comes to rest: the blocks before it run to their end before preparation goes on.
+  PathElement e = element_template(ctx, ElementKind::Stop);
+  e.stop = StopKind::Preprocessing;
+  e.label = label;
+  emit(std::move(e));
+}
+
 void Interpreter::emit_block_end(BlockContext& ctx) {
   // What a block does after its motion: tool change, STOPRE, M0/M1/M2/M30.
   if (ctx.tool_change) change_tool(ctx);
-  if (ctx.preprocessing_stop) {
-    PathElement e = element_template(ctx, ElementKind::Stop);
-    e.stop = StopKind::Preprocessing;
-    e.label = "STOPRE";
-    emit(std::move(e));
-  }
+  if (ctx.preprocessing_stop) emit_preprocessing_stop(ctx, "STOPRE");
   if (ctx.stop) {
     if (spline_.active()) end_spline_run(nullptr);
     PathElement e = element_template(ctx, ElementKind::Stop);

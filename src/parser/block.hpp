@@ -108,6 +108,9 @@ struct Block {
   std::string text;                // the block as written, trimmed, decoded to UTF-8
   std::optional<int64_t> number;   // N123 or :123
   int program_level = 0;           // 0 = main program, 1.. = subprogram nesting depth
+  // The block or a line before it (since the last block) read a main-run variable ($AA_IW,
+  // $A_IN ...): an implicit preprocessing stop before the block (Job Planning, STOPRE).
+  bool main_run_read = false;
   std::vector<GWord> g;
   std::vector<MWord> m;
   std::vector<AddressWord> addresses;
@@ -125,6 +128,7 @@ struct Block {
     text.clear();
     number.reset();
     program_level = 0;
+    main_run_read = false;
     g.clear();
     m.clear();
     addresses.clear();

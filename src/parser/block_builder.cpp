@@ -487,6 +487,11 @@ class ProgramLoader::BlockBuilder {
     out_.text.assign(trimmed(l_.text_));
     out_.number = l_.parsed_.number;
     out_.program_level = static_cast<int>(l_.frames_.size()) - 1;
+    // A main-run variable read on this line or a line consumed since the last block (an IF, an
+    // assignment): the block preparation waited there.
+    const uint64_t reads = l_.system_variables_.main_run_reads();
+    out_.main_run_read = reads != l_.main_run_reads_seen_;
+    l_.main_run_reads_seen_ = reads;
     ++l_.blocks_executed_;
     return true;
   }

@@ -203,6 +203,7 @@ class ProgramLoader {
   std::vector<std::string> programs_used_;
   std::set<std::string, std::less<>> missing_programs_;
   uint64_t blocks_executed_ = 0;
+  uint64_t main_run_reads_seen_ = 0;  // system_variables_.main_run_reads() at the last block
   uint64_t steps_ = 0;
   bool main_has_content_ = false;
   std::bitset<1000> g_used_, m_used_;

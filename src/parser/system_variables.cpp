@@ -55,6 +55,7 @@ std::string system_variable_key(std::string_view upper_name, std::span<const Val
 
 SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::span<const Value> indices) const {
   const std::string key = system_variable_key(name, indices);
+  if (name.size() > 1 && (name[1] == 'A' || name[1] == 'V')) ++main_run_reads_;
   if (name == "$AC_TIMER") {
     // Job Planning, "Timer variable $AC_TIMER[n]": counts seconds from the value written (>= 0)
     // until -1 stops it. Time is the interpreter's (poll_clock), so a timed warm-up loop ends.

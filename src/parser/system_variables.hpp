@@ -78,6 +78,10 @@ class SystemVariables {
   // How many inputs and PLC data ($A_IN, $A_DBB ..., not written by the program) were read so
   // far, and the last one read ("$A_IN[3]"): a loop that repeats while reading them waits.
   uint64_t input_reads() const { return input_reads_; }
+  // How many main-run variables ($A..., $V...: actual values, inputs, clocks) were read so far.
+  // Reading one outside a synchronized action stops the block preparation until the blocks
+  // before it have run (an implicit STOPRE; Job Planning, "Preprocessing stop (STOPRE)").
+  uint64_t main_run_reads() const { return main_run_reads_; }
   const std::string& last_input_read() const { return last_input_; }
 
  private:
@@ -91,6 +95,7 @@ class SystemVariables {
   uint64_t line_ = 0;  // lines begun (begin_line)
   mutable uint64_t view_reads_ = 0;
   mutable uint64_t input_reads_ = 0;
+  mutable uint64_t main_run_reads_ = 0;
   mutable std::string last_input_;
 };
 
