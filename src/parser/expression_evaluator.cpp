@@ -243,7 +243,8 @@ double as_number(const Value& v, uint32_t column) {
 
 std::string as_text(const Value& v) {
   switch (v.kind) {
-    case ValueKind::Number: return number_to_text(v.number);
+    case ValueKind::Number:
+      return v.character ? std::string(1, static_cast<char>(static_cast<unsigned char>(v.number))) : number_to_text(v.number);
     case ValueKind::Frame: return "FRAME";
     default: return v.text;
   }

@@ -19,6 +19,9 @@ struct Value {
   ValueKind kind = ValueKind::Number;
   double number = 0.0;
   std::string text;  // Text: the string; Axis: the axis name (upper case)
+  // A number read from a CHAR: its code in arithmetic, the character where it becomes a STRING
+  // (`<<`, an assignment to STRING; Job Planning, "Possible type conversions").
+  bool character = false;
 
   Value() = default;
   explicit Value(double v) : number(v) {}

@@ -60,6 +60,11 @@ Value Variable::get(size_t element) const {
       f.text = texts_[element];  // the frame's description; empty: the null frame
       return f;
     }
+    case DataType::Char: {
+      Value c(numbers_[element]);
+      c.character = true;
+      return c;
+    }
     default: return Value(numbers_[element]);
   }
 }
@@ -76,7 +81,7 @@ void Variable::set(size_t element, const Value& v, uint32_t column) {
   switch (type_) {
     case DataType::String:
       if (v.kind == ValueKind::Frame) throw LineError(12150, column, "a FRAME assigned to STRING " + name_);
-      texts_[element] = v.is_number() ? number_to_text(v.number) : v.text;
+      texts_[element] = v.is_number() ? as_text(v) : v.text;
       if (texts_[element].size() > string_length_) texts_[element].resize(string_length_);
       return;
     case DataType::Axis:
