@@ -404,6 +404,18 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       case 3: state_.spindle = SpindleState::Clockwise; break;
       case 4: state_.spindle = SpindleState::CounterClockwise; break;
       case 5: state_.spindle = SpindleState::Stopped; break;
+      case 19: {
+        // M19: the master spindle goes to SD43240 M19_SPOS (default 0°) in the mode of SD43250
+        // (default DC, the shortest way), as SPOS would (Function Manual S1, "Spindle positioning
+        // with M19"); another mode of SD43250 is not modelled.
+        parser::AxisWord w;
+        w.kind = parser::AxisWordKind::SPos;
+        w.mode = ValueMode::Direct;
+        w.column = m.column;
+        if (auto it = profile_.machine_data.find("$SA_M19_SPOS"); it != profile_.machine_data.end()) w.value = it->second;
+        add_spindle_positioning(ctx, w);
+        break;
+      }
       default: break;  // M17 is the loader's; coolant and PLC functions take no path time
     }
     // MD22560: the M function that changes the tool when MD22550 = 1.

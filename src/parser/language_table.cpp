@@ -29,7 +29,7 @@ constexpr std::array kSyntax{
     Row{"X=expr", M, "address with an expression; AC() IC(); for rotary axes DC() ACP() ACN() (docs/axes.md)"},
     Row{"POS[ax]= POSA[ax]= FA[ax]= WAITP(ax)", M, "positioning axes on their own interpolator, their feed, waiting for them"},
     Row{"ACC[ax]= VELOLIM[ax]= JERKLIM[ax]=", M, "an axis's acceleration (1-200 %), velocity (1-100 %) and jerk (1-200 %) limits, modal (docs/controller-state.md \"Programmable dynamic limits\")"},
-    Row{"SPOS= SPOS[n]= SPOSA= WAITS", M, "spindle positioning (position control) and waiting for it"},
+    Row{"SPOS= SPOS[n]= SPOSA= WAITS M19", M, "spindle positioning (position control) and waiting for it"},
     Row{"FGROUP(ax, ...)", M, "the axes whose travel the path feed F refers to"},
     Row{"POLY PO[ax]=(end, a2, a3, a4, a5) PL=", M, "polynomial interpolation (degree <= 5 per axis, p in [0, PL], PL default 1); PO[]=(b2..b4), the denominator, is warned and planned straight (docs/controller-state.md \"Polynomial interpolation\")"},
     Row{"DIAMONA[ax] DIAMOFA[ax] DIAM90A[ax] DIACYCOFA[ax] DIAMCHANA[ax] SCC[ax]", M, "axis-specific diameter programming; the reference axis of G96 (docs/controller-state.md \"Diameter programming\")"},
