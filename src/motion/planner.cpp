@@ -507,11 +507,12 @@ void Planner::commit_front() {
   ++summary_.elements;
   if (w.segment_count > 0 && !e.rapid) {
     summary_.max_feed_mm_s = std::max(summary_.max_feed_mm_s, v_max);
-    if (cut_min < kInf) {
-      summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_min) : cut_min;
-      any_cutting_ = true;
-      dips_.add(e.source, e.feed_mm_s * to_contour, cut_min, cut_kind);
-    }
+    // A block run from standstill to standstill (G60, G9, a plunge after G0) has no velocity
+    // outside its planned ramps but its top speed: that is the feed it cut at (not a dip).
+    const double cut_low = cut_min < kInf ? cut_min : v_max;
+    summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_low) : cut_low;
+    any_cutting_ = true;
+    if (cut_min < kInf) dips_.add(e.source, e.feed_mm_s * to_contour, cut_min, cut_kind);
   } else if (w.segment_count > 0) {
     dips_.interrupt();
   }
