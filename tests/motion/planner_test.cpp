@@ -213,6 +213,15 @@ TEST(Planner, TimeAfterFirstM0) {
   EXPECT_NEAR(r.summary.time_s, 2 * 1.002, 1e-9);
 }
 
+TEST(Planner, FeedWhileCuttingCountsABlockBetweenStandstillsAtItsTopSpeed) {
+  // One line from rest to rest at F600 (10 mm/s): no velocity outside its planned ramps, yet it
+  // cut at 10 mm/s; it is not a dip.
+  PlanRun r = plan(plain_profile(), {line(O, Vec3(10, 0, 0), 600)});
+  EXPECT_NEAR(r.summary.min_feed_mm_s, 10.0, 1e-9);
+  EXPECT_NEAR(r.summary.max_feed_mm_s, 10.0, 1e-9);
+  EXPECT_TRUE(r.summary.dips.empty());
+}
+
 TEST(Planner, NoM0MeansNoTimeAfterM0) {
   PlanRun r = plan(plain_profile(), {line(O, Vec3(10, 0, 0), 600)});
   EXPECT_EQ(r.summary.time_after_m0_s, 0.0);
