@@ -19,6 +19,7 @@ constexpr std::array kCatalog{
     AlarmInfo{10763, S::Warning, "Path component of the block in the compensation plane becomes zero (block skipped by bottleneck detection)", A::Siemens},
     AlarmInfo{10860, S::Alarm, "Feedrate not programmed", A::ThirdParty},
     AlarmInfo{10950, S::Alarm, "Arc-length function too inaccurate", A::Siemens},
+    AlarmInfo{12000, S::Alarm, "Address programmed repeatedly", A::ThirdParty},
     AlarmInfo{12010, S::Alarm, "Address programmed too often in block", A::ThirdParty},
     AlarmInfo{12070, S::Alarm, "Too many syntax-defining G functions", A::ThirdParty},
     AlarmInfo{12080, S::Alarm, "Syntax error", A::ThirdParty},

@@ -79,8 +79,17 @@ class ProgramLoader::BlockBuilder {
     }
   }
 
+  // An address may stand once in a block (X10 X20, F100 F200: the control refuses, it does not
+  // take the last); H, an auxiliary function, up to three times.
+  void refuse_repeated(std::string_view name, uint32_t column) const {
+    if (name == "H") return;
+    for (const AddressWord& a : out_.addresses)
+      if (a.name == name) throw LineError(12000, column, "address " + std::string(name) + " programmed twice in the block");
+  }
+
   void address(const Item& item) {
     if (!is_address(item.name)) throw LineError(12550, item.column, "address " + std::string(item.name) + " not defined");
+    refuse_repeated(item.name, item.column);
     AddressWord& w = out_.addresses.emplace_back();  // no temporary: the hot path of every block
     w.name.assign(item.name);
     w.value = l_.parsed_.pool[item.expr].value;
@@ -111,6 +120,7 @@ class ProgramLoader::BlockBuilder {
   }
 
   void address_value(std::string name, const Item& item) {
+    refuse_repeated(name, item.column);
     const auto [value, mode] = moded_value(item);
     out_.addresses.push_back(AddressWord{std::move(name), value, mode, item.column});
     has_words_ = true;
