@@ -88,6 +88,7 @@ bool LineReader::fill() {
 bool LineReader::next(RawLine& out) {
   out.too_long = false;
   out.position = next_position_;
+  if (next_position_.offset >= end_offset_) return false;
   if (whole_file_ && begin_ >= end_) return false;  // (an empty file's buffer has no data())
   size_t scanned = begin_;  // no newline in [begin_, scanned)
   for (;;) {

@@ -39,6 +39,9 @@ class LineReader {
   void seek(const LinePosition& position);
   // Position of the line the next call to next() returns.
   LinePosition tell() const { return next_position_; }
+  // Reads end before the line at byte offset `end` (a program's section of an archive file:
+  // the next program's % header), as at the end of the file.
+  void set_end(uint64_t end) { end_offset_ = end; }
   bool read_error() const { return read_error_; }
 
  private:
@@ -53,6 +56,7 @@ class LineReader {
   bool whole_file_ = false;  // the whole file is in buffer_
   bool read_error_ = false;
   LinePosition next_position_;
+  uint64_t end_offset_ = UINT64_MAX;
 };
 
 }  // namespace drycut::parser

@@ -264,8 +264,8 @@ void ProgramLoader::jump_to_start() {
   // GOTOS (Job Planning, "Program jumps: GOTOS"): back to the beginning of the program, that is
   // its first block after the PROC line, definitions and declarations (those ran once).
   Frame& f = *frames_.back();
-  f.reader.seek(LinePosition{});
-  LinePosition first{};
+  f.reader.seek(f.start);
+  LinePosition first = f.start;
   while (f.reader.next(raw_)) {
     position_ = raw_.position;
     if (raw_.too_long) continue;
@@ -325,7 +325,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
     }
     if (!found) {
       // The jumping block itself is a target too: WAIT: IF $A_IN[1]==0 GOTOB WAIT.
-      f.reader.seek(LinePosition{});
+      f.reader.seek(f.start);
       while (scan_line() && position_.line <= from.line)
         if (matches()) found = position_;
     }
@@ -405,8 +405,8 @@ void ProgramLoader::execute_case() {
 std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label) {
   Frame& f = *frames_.back();
   if (auto it = f.labels.find(label); it != f.labels.end()) return it->second;
-  // Not passed yet: search the whole file.
-  return find_label_between(label, LinePosition{}, UINT64_MAX);
+  // Not passed yet: search the whole program.
+  return find_label_between(label, f.start, UINT64_MAX);
 }
 
 std::optional<LinePosition> ProgramLoader::find_label_between(const std::string& label, LinePosition from,

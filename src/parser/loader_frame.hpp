@@ -31,6 +31,9 @@ struct ProgramLoader::Frame {
   std::shared_ptr<const std::string> file;  // as shown in alarms
   std::string program;                      // upper-case program name
   LineReader reader;
+  // Where the program's first line is: 0, or in an archive file holding several programs the
+  // line after its %_N_NAME_SPF header (the reader ends at the next header).
+  LinePosition start;
   uint64_t passes_left = 1;
   std::vector<CallArgument> args;  // call arguments, bound by PROC
   std::vector<ControlFrame> control;

@@ -72,4 +72,30 @@ std::optional<std::filesystem::path> ProgramFiles::find(const ProgramName& progr
   return std::nullopt;
 }
 
+std::optional<ArchiveSection> find_archive_section(const std::filesystem::path& file, const ProgramName& program) {
+  LineReader reader;
+  if (!reader.open(file)) return std::nullopt;
+  std::optional<ArchiveSection> found[2];  // SPF, MPF
+  std::optional<ArchiveSection>* open = nullptr;  // the section being read: ends at the next header
+  RawLine raw;
+  while (reader.next(raw)) {
+    std::string_view t = raw.bytes;
+    while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+    if (t.empty() || t.front() != '%') continue;
+    if (open) {
+      (*open)->end = raw.position.offset;
+      open = nullptr;
+    }
+    while (!t.empty() && (t.back() == ' ' || t.back() == '\t' || t.back() == '\r')) t.remove_suffix(1);
+    const ProgramName header = normalize_program_name(t.substr(1));
+    if (header.name != program.name || header.extension.empty()) continue;
+    if (!program.extension.empty() && header.extension != program.extension) continue;
+    auto& slot = found[header.extension == "SPF" ? 0 : 1];
+    if (slot) continue;  // the first one of a name counts
+    slot = ArchiveSection{reader.tell(), UINT64_MAX};
+    open = &slot;
+  }
+  return found[0] ? found[0] : found[1];
+}
+
 }  // namespace drycut::parser

@@ -87,9 +87,27 @@ std::vector<std::string> ProgramLoader::commands_used() const {
   return out;
 }
 
+namespace {
+
+// A program header line "%_N_NAME_MPF" / "%_N_NAME_SPF": in an archive file, where the next program
+// begins.
+bool is_program_header(std::string_view bytes) {
+  while (!bytes.empty() && (bytes.front() == ' ' || bytes.front() == '\t')) bytes.remove_prefix(1);
+  return bytes.size() > 4 && bytes[0] == '%' && bytes[1] == '_' && (bytes[2] == 'N' || bytes[2] == 'n') && bytes[3] == '_';
+}
+
+}  // namespace
+
 bool ProgramLoader::read_line(Frame& f) {
   for (;;) {
-    if (!f.reader.next(raw_)) {
+    bool got = f.reader.next(raw_);
+    if (got && raw_.position.offset > f.start.offset && is_program_header(raw_.bytes)) {
+      // The next program of an archive file begins: this one ends before its header.
+      f.reader.set_end(raw_.position.offset);
+      f.reader.seek(raw_.position);
+      got = false;
+    }
+    if (!got) {
       if (f.reader.read_error()) raise(990005, "read error in " + *f.file, 0);
       position_ = f.reader.tell();  // a REPEAT section may end with the file
       if (!f.repeats.empty() && end_of_repeat_section(f)) continue;
@@ -258,6 +276,7 @@ void ProgramLoader::call_program(const std::string& written_name, uint64_t passe
     raise(990003, "calling " + written_name, column);
   const ProgramName name = normalize_program_name(written_name);
   const auto path = files_->find(name);
+  if (!path && call_archived_program(name, passes)) return;
   if (!path) {
     const std::string_view guess = near_miss(name.name);
     if (!guess.empty())
@@ -274,14 +293,42 @@ void ProgramLoader::call_program(const std::string& written_name, uint64_t passe
   auto frame = std::make_unique<Frame>();
   if (!frame->reader.open(*path)) raise(990005, path->string(), column);
   frame->file = std::make_shared<const std::string>(path->string());
-  frame->program = name.name;
+  push_called_frame(std::move(frame), name.name, passes);
+}
+
+bool ProgramLoader::call_archived_program(const ProgramName& name, uint64_t passes) {
+  // Not a file of its own: a section of an archive file already open (the main program and its
+  // subprograms in one punched-tape file). Looked for once per name, innermost program first.
+  const std::string key = name.name + "." + name.extension;
+  auto it = archived_programs_.find(key);
+  if (it == archived_programs_.end()) {
+    std::optional<ArchivedProgram> hit;
+    for (auto f = frames_.rbegin(); f != frames_.rend() && !hit; ++f)
+      if (auto section = find_archive_section(std::filesystem::path(*(*f)->file), name))
+        hit = ArchivedProgram{(*f)->file, *section};
+    it = archived_programs_.emplace(key, std::move(hit)).first;
+  }
+  if (!it->second) return false;
+  const ArchivedProgram& a = *it->second;
+  auto frame = std::make_unique<Frame>();
+  if (!frame->reader.open(*a.file)) return false;
+  frame->reader.seek(a.section.start);
+  frame->reader.set_end(a.section.end);
+  frame->start = a.section.start;
+  frame->file = a.file;
+  push_called_frame(std::move(frame), name.name, passes);
+  return true;
+}
+
+void ProgramLoader::push_called_frame(std::unique_ptr<Frame> frame, const std::string& program, uint64_t passes) {
+  frame->program = program;
   frame->passes_left = std::max<uint64_t>(1, passes);
   frame->args = std::move(pending_args_);
   pending_args_.clear();
   frame->modal_call = pending_is_modal_call_;
   pending_is_modal_call_ = false;
-  if (std::find(programs_used_.begin(), programs_used_.end(), name.name) == programs_used_.end())
-    programs_used_.push_back(name.name);
+  if (std::find(programs_used_.begin(), programs_used_.end(), program) == programs_used_.end())
+    programs_used_.push_back(program);
   frames_.push_back(std::move(frame));
 }
 
@@ -355,7 +402,7 @@ void ProgramLoader::finish_frame() {
     f.repeats.clear();
     f.locals.clear();
     f.executed_block = false;
-    f.reader.seek(LinePosition{});
+    f.reader.seek(f.start);
     return;
   }
   if (f.save) pending_save_ = ModalSave::Restore;

@@ -113,6 +113,9 @@ class ProgramLoader {
   void return_one_level();   // RET/M17, one program level (RET(...) may ask for more)
   bool execute_line(Block& out);
   void call_program(const std::string& written_name, uint64_t passes, uint32_t column);
+  // A called program that is a section of an archive file already open; false when none is.
+  bool call_archived_program(const ProgramName& name, uint64_t passes);
+  void push_called_frame(std::unique_ptr<Frame> frame, const std::string& program, uint64_t passes);
   // After a block with axis motion: the MCALL subprogram is due (not from inside it).
   void schedule_modal_call(const Block& block);
   void end_of_file();
@@ -169,6 +172,12 @@ class ProgramLoader {
   LoaderOptions options_;
   Diagnostics& diagnostics_;
   std::unique_ptr<ProgramFiles> files_;
+  struct ArchivedProgram {
+    std::shared_ptr<const std::string> file;
+    ArchiveSection section;
+  };
+  // Programs looked for in open archive files, by "NAME.EXT" (nullopt: in none of them).
+  std::unordered_map<std::string, std::optional<ArchivedProgram>> archived_programs_;
   std::vector<std::unique_ptr<Frame>> frames_;
   std::unique_ptr<Scope> scope_;
   std::vector<double> r_parameters_;
