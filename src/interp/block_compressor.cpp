@@ -54,7 +54,12 @@ bool BlockCompressor::joins_run(const PathElement& e) const {
   const double length = e.curve->length();
   if (length > profile_.compressor.block_path_limit_mm) return false;
   if (std::abs(e.feed_mm_s - run_feed_mm_s_) > profile_.compressor.velo_tol_mm_s) return false;
-  if (!same_dynamics(e.dynamics, run_dynamics_) || e.feed_scale != run_feed_scale_) return false;
+  // Under G41/G42 with CFC the feed is the tool centre's, scaled per block by its length ratio
+  // (a few per mille from chord to chord on a curved contour): the programmed contour feed must
+  // stay within MD20172 as well, not the ratio be equal.
+  if (std::abs(e.feed_mm_s / e.feed_scale - run_feed_mm_s_ / run_feed_scale_) > profile_.compressor.velo_tol_mm_s)
+    return false;
+  if (!same_dynamics(e.dynamics, run_dynamics_)) return false;
   // A zero-length block joins only a run that has a segment for it to ride on.
   if (length <= 0.0 && elements_.empty()) return false;
   return (e.curve->start() - points_.back()).norm() <= 1e-9 * (1.0 + points_.back().norm());

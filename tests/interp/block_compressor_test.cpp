@@ -53,6 +53,31 @@ TEST(BlockCompressor, CompofAndNonSimpleBlocksPassUnchanged) {
     EXPECT_LT((m[i].curve->start() - m[i - 1].curve->end()).norm(), 1e-12) << "the path stays connected at " << i;
 }
 
+TEST(BlockCompressor, CentreFeedRatiosOfCompensatedBlocksDoNotBreakTheRun) {
+  // Under G41/G42 with CFC the compensation stage scales each block's feed by its own tool-centre
+  // to contour length ratio, which differs by a few per mille from chord to chord: the run holds
+  // as long as the contour feed and the centre feed stay within MD20172 (the profile's 1 mm/s
+  // here allows far more than these 0.4 % of 50 mm/s).
+  const auto profile = testing::test_profile();  // the stage keeps a reference
+  auto run = testing::run_program("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + x_blocks(1, 10) + "M30\n", profile);
+  ASSERT_FALSE(run->alarm);
+  CollectingSink out;
+  BlockCompressor stage(out, profile);
+  int k = 0;
+  for (auto& e : run->sink.elements) {
+    PathElement c(e);
+    if (c.is_motion() && !c.rapid) {
+      c.feed_scale = 1.04 + 0.001 * (k++ % 4);
+      c.feed_mm_s *= c.feed_scale;
+    }
+    stage.consume(std::move(c));
+  }
+  stage.finish();
+  const auto m = out.motions();
+  ASSERT_EQ(m.size(), 2u);  // the G0, then one span of all ten blocks
+  EXPECT_EQ(m[1].compressed_blocks, 10u);
+}
+
 TEST(BlockCompressor, ALongRunIsFlushedInWindowsAndStaysTangentContinuous) {
   auto p = testing::test_profile();
   p.compressor.flush_points = 100;
