@@ -237,6 +237,7 @@ class Interpreter {
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
   std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
+  Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
   std::array<double, 3> geometry_positioning_feed_{};  // FA[X/Y/Z] (mm/s), else MD32060 of the axis
