@@ -149,6 +149,14 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
   // The master spindle's number (MD20090, SETMS(n)).
   if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));
+  if (n == "$P_AD" && indices.size() == 1 && indices[0].is_number()) {
+    // $P_AD[n]: parameter n of the active cutting edge, as $TC_DPn[active tool, active D] (3 the
+    // length, 6 the radius, 12/15 their wear; the others read 0 here). No edge active: 0.
+    if (!tools.has_tool() || tools.edge() <= 0) return Value(0.0);
+    const Value edge_indices[2] = {Value(tool_number(tools, tools.active_tool())), Value(static_cast<double>(tools.edge()))};
+    const double k = indices[0].number;
+    return number(tool_datum(k >= 1 && k <= 25 ? static_cast<int>(k) : 0, edge_indices));
+  }
   if (n == "$TC_DP3") return number(tool_datum(3, indices));
   if (n == "$TC_DP6") return number(tool_datum(6, indices));
   if (n == "$TC_DP12") return number(tool_datum(12, indices));
