@@ -50,12 +50,29 @@ void FrameChain::set_settable(const Frame& frame) {
 
 void FrameChain::set_programmable(const Frame& frame) {
   programmable_ = frame;
+  absolute_translation_ = frame.offset();  // a frame written whole ($P_PFRAME): all absolute
+  additive_translation_.setZero();
   update();
 }
 
 void FrameChain::program(const Frame& component, bool additive) {
+  const bool parts_known = programmable_.is_pure_translation();
   programmable_ = additive ? programmable_.then(component) : component;
+  if (additive && parts_known && component.is_pure_translation()) {
+    additive_translation_ += component.offset();
+  } else {
+    absolute_translation_ = programmable_.offset();
+    additive_translation_.setZero();
+  }
   update();
+}
+
+bool FrameChain::axial_offset(int axis, double value, bool additive) {
+  if (!programmable_.is_pure_translation() || axis < 0 || axis > 2) return false;
+  (additive ? additive_translation_ : absolute_translation_)[axis] = value;
+  programmable_ = Frame::translation(absolute_translation_ + additive_translation_);
+  update();
+  return true;
 }
 
 void FrameChain::update() { total_ = settable_.then(programmable_); }

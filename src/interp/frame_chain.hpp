@@ -53,6 +53,12 @@ class FrameChain {
   // TRANS/ROT/SCALE/MIRROR replace the whole programmable frame by `component` (an instruction
   // without values therefore clears it); ATRANS/AROT/ASCALE/AMIRROR chain it inside.
   void program(const Frame& component, bool additive);
+  // G58 (additive false) / G59 (true) axis=value: replace, for that axis only, the absolute
+  // (TRANS) or the additive (ATRANS) part of the programmable frame's translation; the other
+  // part stays (PGA Fundamentals, "Axial programmable zero offset (G58, G59)"). drycut keeps the
+  // two parts apart while the programmable frame is a pure translation; false (nothing changed)
+  // when it also rotates, scales or mirrors.
+  bool axial_offset(int axis, double value, bool additive);
 
  private:
   void update();
@@ -60,6 +66,10 @@ class FrameChain {
   Frame settable_;
   Frame programmable_;
   Frame total_;
+  // The programmable translation split as TRANS/G58 and ATRANS/G59 wrote it (programmable_ is
+  // translation(absolute_ + additive_) whenever it is a pure translation).
+  Eigen::Vector3d absolute_translation_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d additive_translation_ = Eigen::Vector3d::Zero();
 };
 
 }  // namespace drycut::interp

@@ -141,6 +141,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       case 25: case 26: ctx.speed_limit = code; continue;
       case 9: ctx.exact_stop = true; continue;
       case 53: case 153: ctx.suppress_offsets = true; continue;
+      case 58: case 59: ctx.axial_offset = code; continue;
       case 110: ctx.pole = PoleReference::LastPosition; continue;
       case 111: ctx.pole = PoleReference::WorkpieceZero; continue;
       case 112: ctx.pole = PoleReference::LastPole; continue;
@@ -631,6 +632,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
 
   if (ctx.frame_instruction) {
     apply_frame_instruction(ctx);
+    return;
+  }
+  if (ctx.axial_offset) {
+    apply_axial_offset(ctx);
     return;
   }
   if (ctx.speed_limit) {

@@ -119,6 +119,7 @@ struct Interpreter::BlockContext {
   // TRANS/ROT/SCALE/MIRROR (A...: additive): the axis words are the frame's values, not a target.
   std::optional<FrameInstruction> frame_instruction;
   bool additive_frame = false;
+  int axial_offset = 0;  // G58 / G59: the axis words replace a part of the programmable translation
   std::optional<PoleReference> pole;  // G110/G111/G112: the axis or polar words define the pole
   bool compensation_changed = false;
   double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)

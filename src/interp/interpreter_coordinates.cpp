@@ -91,6 +91,20 @@ void Interpreter::apply_frame_instruction(const BlockContext& ctx) {
   state_.frames.program(component, ctx.additive_frame);
 }
 
+void Interpreter::apply_axial_offset(const BlockContext& ctx) {
+  // G58 X.. / G59 X..: the axis words are offsets, not a target (frame_chain.hpp).
+  const double unit = state_.inch ? kMmPerInch : 1.0;
+  const bool additive = ctx.axial_offset == 59;
+  for (const AddressWord& a : ctx.block.addresses) {
+    const int i = axis_index(a.name);
+    if (i < 0) continue;
+    if (!state_.frames.axial_offset(i, a.value * unit, additive))
+      warn_once(ctx, std::string(additive ? "G59" : "G58") +
+                         " with a programmable frame that rotates, scales or mirrors (offset not applied)",
+                a.column);
+  }
+}
+
 void Interpreter::define_pole(const BlockContext& ctx) {
   const double unit = state_.inch ? kMmPerInch : 1.0;
   const PlaneIndices axes = state_.plane_indices();

@@ -299,7 +299,9 @@ Support g_code_support(int64_t g) {
       return E;
     case 25: case 26:  // spindle speed limits (G25/G26 S); with axis words: working area, warned
       return M;
-    case 5: case 7: case 8: case 58: case 59:
+    case 58: case 59:  // axial programmable offsets (the interpreter's frame chain)
+      return M;
+    case 5: case 7: case 8:
     case 74: case 75: case 140: case 141:
     case 142: case 143: case 147: case 148: case 247: case 248:
     case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:

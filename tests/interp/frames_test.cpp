@@ -82,6 +82,21 @@ TEST(FrameChain, ProgrammableFrameActsInsideTheSettableFrame) {
   EXPECT_TRUE(near(chain.total(true).to_outer({10, 0, 0}), Vector3d(10, 0, 0)));
 }
 
+TEST(FrameChain, AxialOffsetsReplaceOnePartOfTheTranslation) {
+  FrameChain chain;
+  chain.program(Frame::translation({10, 7, 0}), false);  // TRANS X10 Y7
+  chain.program(Frame::translation({2, 0, 0}), true);    // ATRANS X2
+  ASSERT_TRUE(chain.axial_offset(0, 20, false));         // G58 X20: absolute X, additive 2 stays
+  EXPECT_TRUE(near(chain.programmable().offset(), Vector3d(22, 7, 0)));
+  ASSERT_TRUE(chain.axial_offset(0, 11, true));          // G59 X11: additive X
+  EXPECT_TRUE(near(chain.programmable().offset(), Vector3d(31, 7, 0)));
+  chain.program(Frame::translation({5, 0, 0}), false);   // TRANS X5 starts both parts afresh
+  ASSERT_TRUE(chain.axial_offset(1, 3, true));
+  EXPECT_TRUE(near(chain.programmable().offset(), Vector3d(5, 3, 0)));
+  chain.program(Frame::rotation_about(2, 90), true);     // AROT RPL=90: no longer a translation
+  EXPECT_FALSE(chain.axial_offset(0, 1, false));
+}
+
 Vector3d end_of(const RunResult& r, size_t motion) { return r.sink.motions().at(motion).curve->end(); }
 
 TEST(Frames, RotationInThePlaneAfterATranslation) {
