@@ -194,6 +194,9 @@ class Interpreter {
   [[noreturn]] void raise(const BlockContext& ctx, int number, const std::string& detail,
                           uint32_t column = 0) const;
   // A warning once per text: 990002 (not modelled), or the given catalogue number.
+  // A thread block whose lead at the spindle speed asks an axis for more than its MAX_AX_VELO.
+  void warn_thread_beyond_axis_velocity(BlockContext& ctx, double feed_mm_s, double length_mm,
+                                        const Eigen::Vector3d& chord);
   void warn_once(const BlockContext& ctx, const std::string& what, uint32_t column);
   void warn_once(const BlockContext& ctx, int number, const std::string& what, uint32_t column);
   // "S2" -> 2 (the spindle of a numbered speed address S<n>=), 0 for any other name.

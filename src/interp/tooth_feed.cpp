@@ -4,6 +4,10 @@
 // changes and D selections (the new edge's teeth count from then on), is deleted by a change
 // between G93/G94/G95 and has no effect under G93/G94. An F replaces it; F and FZ in one block:
 // FZ (warned). Unknown teeth (0 or no edge): drycut assumes 1 tooth, F = FZ, warning 990002.
+// Here too the path feed of a block (feed_mm_s) and its check that a thread's lead at the
+// spindle speed does not ask an axis for more than its MAX_AX_VELO.
+#include <cstdio>
+
 #include "interp/feed_rate.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
@@ -53,7 +57,28 @@ double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::
   const FeedResult feed = path_feed(feed_state(ctx, scratch), spindle_speed(ctx, &chord), length_mm, chord,
                                      ctx.lead_change_mm);
   if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
+  if (state_.thread_mode() && length_mm > 0) warn_thread_beyond_axis_velocity(ctx, feed.mm_s, length_mm, chord);
   return feed.mm_s;
+}
+
+void Interpreter::warn_thread_beyond_axis_velocity(BlockContext& ctx, double feed_mm_s, double length_mm,
+                                                   const Eigen::Vector3d& chord) {
+  // G33/G34/G35 couple the axes to the spindle: an axis that would have to run faster than its
+  // MAX_AX_VELO (MD32000) cannot follow, so the lead is not cut as programmed; the planner limits
+  // the velocity (the time shown is that of the slower, wrong thread).
+  for (int i = 0; i < 3; ++i) {
+    const double axis_velocity = feed_mm_s * std::abs(chord[i]) / length_mm;
+    const double limit = profile_.axes[static_cast<size_t>(i)].max_velocity_mm_s;
+    if (limit > 0 && axis_velocity > limit * (1 + 1e-9)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    "%s: axis %s would need %.0f mm/min for the lead at this speed, more than its %.0f (MD32000): "
+                    "the thread is not cut as programmed",
+                    std::string(motion_mode_name(state_.motion)).c_str(), profile_.axes[static_cast<size_t>(i)].name.c_str(),
+                    axis_velocity * 60, limit * 60);
+      warn_once(ctx, 990013, buf, 0);
+    }
+  }
 }
 
 }  // namespace drycut::interp
