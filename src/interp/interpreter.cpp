@@ -404,7 +404,13 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       case 2: case 30: ctx.stop = StopKind::ProgramEnd; break;
       case 3: state_.spindle = SpindleState::Clockwise; break;
       case 4: state_.spindle = SpindleState::CounterClockwise; break;
-      case 5: state_.spindle = SpindleState::Stopped; break;
+      case 5:
+        // M5 does not wait for the spindle: it brakes (MD35200) while the program goes on; an
+        // SPOS/M19 before it stands finds it still turning (add_spindle_positioning).
+        if (state_.spindle != SpindleState::Stopped && state_.spindle_rpm > 0)
+          master_braking_ = {nominal_time_s_, state_.spindle_rpm};
+        state_.spindle = SpindleState::Stopped;
+        break;
       case 19: {
         // M19: the master spindle goes to SD43240 M19_SPOS (default 0°) in the mode of SD43250
         // (default DC, the shortest way), as SPOS would (Function Manual S1, "Spindle positioning

@@ -241,6 +241,12 @@ class Interpreter {
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
   std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
+  // The master spindle's last M5: when (the nominal clock) and from which speed it braked.
+  struct SpindleBraking {
+    double since_s = 0.0;
+    double from_rpm = 0.0;
+  };
+  SpindleBraking master_braking_;
   Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)

@@ -262,6 +262,13 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     m.travel = kTurn / 2;
   } else if (!master) {
     m.travel = kTurn / 2;  // a standing spindle whose angle drycut does not follow: half a turn
+  } else if (const double braking_rpm = master_braking_.from_rpm - (nominal_time_s_ - master_braking_.since_s) * 60.0 *
+                                                                     profile_.spindle_speedctrl_accel_rev_s2;
+             master_braking_.from_rpm > 0 && braking_rpm > 0) {
+    // Still turning down after M5: as from rotation, at the speed it has come down to.
+    m.lead_time_s = std::max(0.0, braking_rpm - profile_.spindle_posctrl_velo_rpm) / 60.0 /
+                    profile_.spindle_speedctrl_accel_rev_s2;
+    m.travel = kTurn / 2;
   } else {
     const ValueMode mode = w.mode == ValueMode::Default || w.mode == ValueMode::Absolute ? ValueMode::Direct : w.mode;
     double d = wrap_modulo(w.value, kTurn) - spindle_angle_;
@@ -271,6 +278,7 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     m.travel = d;
   }
   if (master) {
+    master_braking_ = {};
     spindle_angle_ = wrap_modulo(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value, kTurn);
     state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
   } else {
