@@ -1,5 +1,6 @@
 #include "interp/block_compressor.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -126,6 +127,7 @@ void BlockCompressor::flush(bool carry) {
       continue;
     }
     PathElement out = std::move(elements_[begin]);
+    merge_extra_axes(out, begin + 1, next_element);
     out.kind = ElementKind::SplineSpan;
     out.curve = span.curve;
     out.label = compressor_label(run_mode_);
@@ -143,6 +145,20 @@ void BlockCompressor::flush(bool carry) {
     // The next window goes on from the last point with the tangent this one ended with.
     points_.push_back(last);
     start_tangent_ = tangent;
+  }
+}
+
+void BlockCompressor::merge_extra_axes(PathElement& span, size_t from, size_t to) const {
+  // The further axes (A, C ...) of the blocks a span replaces move with it: each from where the
+  // first of those blocks found it, by the sum of their travels, linearly along the span as in
+  // any block (the compressor fits the X/Y/Z points only).
+  for (size_t i = from; i < to; ++i) {
+    for (const ExtraAxisMove& m : elements_[i].extra_axes) {
+      auto same = std::find_if(span.extra_axes.begin(), span.extra_axes.end(),
+                               [&](const ExtraAxisMove& s) { return s.axis == m.axis; });
+      if (same == span.extra_axes.end()) span.extra_axes.push_back(m);
+      else same->travel += m.travel;
+    }
   }
 }
 

@@ -41,6 +41,8 @@ class BlockCompressor final : public ElementSink {
   // Fits the run and hands on its elements in order. carry: the run goes on from its last
   // point (a window cut, `flush_points`); else it is closed.
   void flush(bool carry);
+  // Adds the further-axis travels of elements_[from, to) to a span made from an earlier element.
+  void merge_extra_axes(PathElement& span, size_t from, size_t to) const;
 
   ElementSink& next_;
   const machine::MachineProfile& profile_;

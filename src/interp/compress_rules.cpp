@@ -6,15 +6,29 @@
 namespace drycut::interp {
 namespace detail {
 
-bool is_simple_block(const parser::Block& block) {
+namespace {
+
+// A2/B2/C2 (orientation angles), A3/B3/C3 (direction vector), A4..C5 (surface normals): the tool
+// orientation a 5-axis post writes in every block under TRAORI (Job Planning, "Compression of the
+// orientation": such blocks are compressed too). drycut does not model orientation; the words
+// do not stop a run.
+bool is_orientation_word(std::string_view n) {
+  return n.size() == 2 && (n[0] == 'A' || n[0] == 'B' || n[0] == 'C') && n[1] >= '2' && n[1] <= '5';
+}
+
+}  // namespace
+
+bool is_simple_block(const parser::Block& block, const ExtraAxes& extra_axes) {
   if (!block.m.empty() || !block.commands.empty() || !block.system_writes.empty() ||
       !block.axis_words.empty() || block.tool_name || block.modal_save != parser::ModalSave::None)
     return false;
   for (const auto& g : block.g)
     if (g.code != 1) return false;
   for (const auto& a : block.addresses) {
-    const bool position = a.name == "X" || a.name == "Y" || a.name == "Z";
-    if (!position && a.name != "F") return false;
+    // Positions of the geometry axes and of the machine's further path axes (rotary A/C of a
+    // 5-axis machine: Job Planning lists `X Y Z A B C F` blocks as compressible).
+    const bool position = a.name == "X" || a.name == "Y" || a.name == "Z" || extra_axes.index(a.name) >= 0;
+    if (!position && a.name != "F" && !is_orientation_word(a.name)) return false;
     if (a.mode != parser::ValueMode::Default && a.mode != parser::ValueMode::Absolute &&
         a.mode != parser::ValueMode::Incremental)
       return false;
@@ -32,8 +46,7 @@ void Interpreter::mark_for_compressor(const BlockContext& ctx, PathElement& elem
     warn_once(ctx, "COMPCAD compression of circles (MD20482 hundreds digit 1/3): circle blocks stay circles", 0);
   if (element.rapid && (hundreds == 2 || hundreds == 3))
     warn_once(ctx, "compression of G0 blocks (MD20482 hundreds digit 2/3): G0 blocks stay lines", 0);
-  if (element.kind != ElementKind::Line || element.rapid || state_.motion != MotionMode::Linear ||
-      !element.extra_axes.empty() || !ctx.simple)
+  if (element.kind != ElementKind::Line || element.rapid || state_.motion != MotionMode::Linear || !ctx.simple)
     return;
   element.compressible = true;
   element.follows_other_block = block_between_compressible_;

@@ -81,7 +81,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   ctx.geometry_positioning = geometry_positioning;
   if (geometry_positioning == GeometryPositioning::WithPath)
     warn_once(ctx, "POS/POSA of a geometry axis in a block with path axes (it moves with the path, at the path feed)", 0);
-  ctx.simple = is_simple_block(block);
+  ctx.simple = is_simple_block(block, extra_axes_);
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
   if (block.main_run_read) emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
   apply_system_writes(block);

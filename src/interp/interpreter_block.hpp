@@ -79,10 +79,11 @@ inline std::optional<FrameInstruction> frame_instruction_kind(std::string_view n
 }
 
 // A block the NC block compressor may join (FB1 B1 "NC block compression": `N.. G1 X.. Y.. Z..
-// F.. ;comment`, positions also as X=AC(..) or expressions): no word but G1, X/Y/Z and F.
+// F.. ;comment`, positions also as X=AC(..) or expressions): no word but G1, the positions of
+// X/Y/Z and of the profile's further axes (A, C ...), tool orientation words (A3= ...) and F.
 // Any other G code, M or H function, command, system-variable write, T, D ... interrupts
 // compression (compress_rules.cpp).
-bool is_simple_block(const parser::Block& block);
+bool is_simple_block(const parser::Block& block, const ExtraAxes& extra_axes);
 
 // Minimum spline end-point blocks per window of 10 (facts §1.2).
 inline int spline_quota(MotionMode mode, int cubic_spline_blocks) {

@@ -78,6 +78,38 @@ TEST(BlockCompressor, CentreFeedRatiosOfCompensatedBlocksDoNotBreakTheRun) {
   EXPECT_EQ(m[1].compressed_blocks, 10u);
 }
 
+TEST(BlockCompressor, FurtherAxesOfTheBlocksMoveWithTheirSpan) {
+  // Ten compressible blocks, each turning C by 0.5 deg and blocks 5..10 A by 1 deg: the span that
+  // replaces them starts C where the first block found it (30) and turns it 10 x 0.5 = 5 deg, A
+  // from where block 5 found it (0) by 6 x 1 = 6 deg.
+  const auto profile = testing::test_profile();  // the stage keeps a reference
+  auto run = testing::run_program("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + x_blocks(1, 10) + "M30\n", profile);
+  ASSERT_FALSE(run->alarm);
+  CollectingSink out;
+  BlockCompressor stage(out, profile);
+  int k = 0;
+  for (auto& e : run->sink.elements) {
+    PathElement c(e);
+    if (c.is_motion() && !c.rapid) {
+      c.extra_axes.push_back({5, "C", 30.0 + 0.5 * k, 0.5, false});
+      if (k >= 4) c.extra_axes.push_back({3, "A", 1.0 * (k - 4), 1.0, false});
+      ++k;
+    }
+    stage.consume(std::move(c));
+  }
+  stage.finish();
+  const auto m = out.motions();
+  ASSERT_EQ(m.size(), 2u);
+  ASSERT_EQ(m[1].compressed_blocks, 10u);
+  ASSERT_EQ(m[1].extra_axes.size(), 2u);
+  EXPECT_EQ(m[1].extra_axes[0].name, "C");
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[0].start, 30.0);
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[0].travel, 5.0);
+  EXPECT_EQ(m[1].extra_axes[1].name, "A");
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[1].start, 0.0);
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[1].travel, 6.0);
+}
+
 TEST(BlockCompressor, ALongRunIsFlushedInWindowsAndStaysTangentContinuous) {
   auto p = testing::test_profile();
   p.compressor.flush_points = 100;
