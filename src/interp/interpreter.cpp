@@ -82,6 +82,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   if (geometry_positioning == GeometryPositioning::WithPath)
     warn_once(ctx, "POS/POSA of a geometry axis in a block with path axes (it moves with the path, at the path feed)", 0);
   ctx.simple = is_simple_block(block, extra_axes_);
+  ctx.compensation_before = state_.compensation;
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
   if (block.main_run_read) emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
   apply_system_writes(block);
@@ -160,7 +161,11 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         ctx.compensation_column = g.column;
         continue;
       }
-      case 40: state_.compensation = CompensationSide::None; ctx.compensation_changed = true; continue;
+      case 40:
+        state_.compensation = CompensationSide::None;
+        ctx.compensation_changed = true;
+        ctx.compensation_column = g.column;
+        continue;
       case 500: case 54: case 55: case 56: case 57: select_settable_frame(ctx, code, g.column); continue;
       case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
       case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
@@ -622,6 +627,21 @@ void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) 
   }
 }
 
+void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, bool moves) const {
+  // G41/G42 are selected and G40 deselected in a straight block only (Function Manual W1, "Tool
+  // radius compensation": selection with G0 or G1): in a circle, spline or polynomial block the
+  // control stops with 10753 / 10754 (the compensation has no start or end point to go from).
+  const bool curve = state_.motion == MotionMode::ArcCw || state_.motion == MotionMode::ArcCcw ||
+                     state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent ||
+                     state_.motion == MotionMode::ASpline || state_.motion == MotionMode::BSpline ||
+                     state_.motion == MotionMode::CSpline || state_.motion == MotionMode::Polynomial;
+  if (!ctx.compensation_changed || !moves || !curve) return;
+  const bool was_on = ctx.compensation_before != CompensationSide::None;
+  const bool is_on = state_.compensation != CompensationSide::None;
+  if (!was_on && is_on) raise(ctx, 10753, "G41/G42 in a block that is not G0/G1", ctx.compensation_column);
+  if (was_on && !is_on) raise(ctx, 10754, "G40 in a block that is not G0/G1", ctx.compensation_column);
+}
+
 void Interpreter::execute_motion(BlockContext& ctx) {
   if (ctx.compensation_changed && state_.compensation != CompensationSide::None &&
       (!tools_.has_tool() || tools_.edge() == 0))
@@ -663,6 +683,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   const bool full_circle = arc_mode && !has_axis &&
                            (ctx.block.find_address("I") || ctx.block.find_address("J") ||
                             ctx.block.find_address("K") || ctx.block.find_address("AR"));
+  refuse_compensation_change_on_curve(ctx, has_axis || full_circle);
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
   // The dwell's words are checked before the block moves: a refused block adds nothing.

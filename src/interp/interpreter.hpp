@@ -136,6 +136,8 @@ class Interpreter {
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement&& element);  // by rvalue: one PathElement move less per element
   void emit_clock_wait(const BlockContext& ctx);
+  // 10753/10754: G41/G42 selected or G40 deselected in a circle, spline or polynomial block.
+  void refuse_compensation_change_on_curve(const BlockContext& ctx, bool moves) const;
   void emit_preprocessing_stop(BlockContext& ctx, const char* label);  // STOPRE, explicit or implicit
   void emit_block_end(BlockContext& ctx);  // tool change, STOPRE, M0/M1/M2/M30 after the motion
   void add_nominal_time(const PathElement& element);

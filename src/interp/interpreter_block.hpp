@@ -123,6 +123,7 @@ struct Interpreter::BlockContext {
   int axial_offset = 0;  // G58 / G59: the axis words replace a part of the programmable translation
   std::optional<PoleReference> pole;  // G110/G111/G112: the axis or polar words define the pole
   bool compensation_changed = false;
+  CompensationSide compensation_before = CompensationSide::None;  // G40/G41/G42 before this block
   double lead_change_mm = 0.0;  // F of a G34/G35 block (lead change per revolution)
   uint32_t compensation_column = 0;  // the G41/G42 word
   std::optional<double> block_feed;  // F in this block (not a G4 block)

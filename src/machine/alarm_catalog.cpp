@@ -14,6 +14,8 @@ constexpr std::array kCatalog{
     AlarmInfo{10720, S::Alarm, "Software limit switch violated", A::Memory},
     AlarmInfo{10750, S::Alarm, "Tool radius compensation activated without tool number", A::Memory},
     AlarmInfo{10751, S::Alarm, "Danger of collision due to tool radius compensation", A::Memory},
+    AlarmInfo{10753, S::Alarm, "Activation of tool radius compensation only possible in linear block", A::ThirdParty},
+    AlarmInfo{10754, S::Alarm, "Deactivation of tool radius compensation only possible in linear block", A::ThirdParty},
     AlarmInfo{10757, S::Alarm, "Compensation plane changed while tool radius compensation is active", A::Siemens},
     AlarmInfo{10762, S::Alarm, "Too many empty blocks between two traversing blocks with tool radius compensation", A::Siemens},
     AlarmInfo{10763, S::Warning, "Path component of the block in the compensation plane becomes zero (block skipped by bottleneck detection)", A::Siemens},
