@@ -267,6 +267,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       }
       if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
       state_.feed = a.value;
+      state_.feed_type_changed = false;
       state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
       ctx.block_feed = a.value;
       apply_f_after_tooth_feed(ctx, a);

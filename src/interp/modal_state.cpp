@@ -9,7 +9,10 @@ namespace {
 // G93/G94/G95: a change of the feed type deletes the tooth feed FZ; selecting the active type
 // again keeps it (Fundamentals, "Tooth feedrate (G95 FZ)").
 void set_feed_mode(ModalState& s, FeedMode mode) {
-  if (s.feed_mode != mode) s.tooth_feed = 0.0;
+  if (s.feed_mode != mode) {
+    s.tooth_feed = 0.0;
+    s.feed_type_changed = s.feed > 0;  // with no F yet, the first feed block raises 10860 anyway
+  }
   s.feed_mode = mode;
 }
 

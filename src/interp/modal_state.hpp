@@ -47,6 +47,9 @@ struct ModalState {
   FrameChain frames;                // settable and programmable frame (src/interp/frame_chain.hpp)
   PolarState polar;                 // pole, AP, RP
   double feed = 0.0;                // as programmed (per minute, per revolution, or 1/min under G93)
+  // G93/G94/G95 changed and no F programmed since: the old value would be read in the new unit
+  // (Fundamentals, "Feedrate": F is to be programmed again after such a change).
+  bool feed_type_changed = false;
   double feed_unit_mm = 1.0;        // mm per length unit of F when it was programmed (25.4: inch)
   // FZ tooth feed as programmed (0: none, F governs); under G95 the feed per revolution is
   // FZ times the active edge's number of teeth. Deleted by a change of G93/G94/G95.

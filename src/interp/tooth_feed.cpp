@@ -53,6 +53,15 @@ const ModalState& Interpreter::feed_state(const BlockContext& ctx, ModalState& s
 }
 
 double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord) {
+  if (state_.feed_type_changed && !state_.thread_mode()) {
+    char buf[120];
+    std::snprintf(buf, sizeof buf, "F%g taken as %s", state_.feed,
+                  state_.feed_mode == FeedMode::InverseTime     ? "1/min (G93)"
+                  : state_.feed_mode == FeedMode::PerRevolution ? "per revolution (G95)"
+                                                                : "per minute (G94)");
+    warn_once(ctx, 990016, buf, 0);
+    state_.feed_type_changed = false;
+  }
   ModalState scratch;
   const FeedResult feed = path_feed(feed_state(ctx, scratch), spindle_speed(ctx, &chord), length_mm, chord,
                                      ctx.lead_change_mm);
