@@ -54,10 +54,17 @@ void print_span(std::FILE* out, const report::RunEventRecorder& events, const re
 }
 
 void print_summary(std::FILE* out, const RunOptions& o, const machine::MachineProfile& profile,
-                   const motion::PlanSummary& s, const report::RunCompletion& completion) {
+                   const motion::PlanSummary& s, const report::RunCompletion& completion,
+                   const std::vector<std::string>& untimed) {
   std::fprintf(out, "%s on %s\n", std::filesystem::path(o.program.program).filename().string().c_str(), profile.name.c_str());
   // A stopped run's figures are partial: say so before them, not after.
   if (!completion.complete) std::fprintf(out, "  INCOMPLETE: %s\n", report::incomplete_note(completion).c_str());
+  // So is the time of a run with cycles drycut does not simulate.
+  if (!untimed.empty()) {
+    std::string names;
+    for (const auto& n : untimed) names += (names.empty() ? "" : ", ") + n;
+    std::fprintf(out, "  NOT TIMED: %s (warning 62900): the time below leaves them out\n", names.c_str());
+  }
   std::fprintf(out, "  time               %9.2f s\n", s.time_s);
   std::fprintf(out, "  time after M0      %9.2f s\n", s.time_after_m0_s);
   std::fprintf(out, "  path length        %9.1f mm\n", s.path_length_mm);
@@ -164,7 +171,7 @@ void register_run(CLI::App& app) {
       if (report) report->finish(summary, outcome.diagnostics, completion, end_position, &events, span);
       const bool stdout_taken = json_path == "-" || o->trace_file == "-";
       std::FILE* text_out = stdout_taken ? stderr : stdout;
-      print_summary(text_out, *o, profile, summary, completion);
+      print_summary(text_out, *o, profile, summary, completion, report::untimed_cycles(outcome.diagnostics.items()));
       compression.print(text_out);
       if (span) print_span(text_out, events, *span);
       throw ExitRequest{report_outcome(outcome)};

@@ -25,4 +25,9 @@ RunCompletion run_completion(const std::vector<Alarm>& diagnostics, bool ended_i
 // without folders), for text summaries and tables.
 std::string incomplete_note(const RunCompletion& completion);
 
+// The standard cycles the run called that drycut does not simulate (warning 62900 "... not
+// simulated, no time counted": turning, contour and measuring cycles), by name, each once: the
+// run's time leaves them out, which a summary must say next to the time.
+std::vector<std::string> untimed_cycles(const std::vector<Alarm>& diagnostics);
+
 }  // namespace drycut::report

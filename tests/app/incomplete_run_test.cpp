@@ -23,6 +23,20 @@ constexpr const char* kStops =
     "N60 M30\n";
 constexpr const char* kRunsThrough = "N10 G0 X0 Y0 Z0\nN20 G1 X10 F600\nN30 G1 Y10\nN40 M30\n";
 
+TEST(IncompleteRun, TextSummaryNamesTheCyclesItDidNotTime) {
+  // CYCLE802 is accepted without simulation (warning 62900 "... no time counted"): the summary
+  // says so before the time, naming it once however often it was called.
+  TempDir dir("drycut_untimed_text");
+  write_file(dir.path / "UNTIMED.MPF", "G17 G90 G0 Z50\nCYCLE802(1,2,3)\nCYCLE802(1,2,3)\nM30\n");
+  const CliRun r = run_drycut("run -q " + quoted(dir.path / "UNTIMED.MPF"));
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("NOT TIMED: CYCLE802 (warning 62900): the time below leaves them out"), std::string::npos)
+      << r.out;
+  EXPECT_LT(r.out.find("NOT TIMED"), r.out.find("  time  ")) << r.out;
+  write_file(dir.path / "TIMED.MPF", kRunsThrough);
+  EXPECT_EQ(run_drycut("run -q " + quoted(dir.path / "TIMED.MPF")).out.find("NOT TIMED"), std::string::npos);
+}
+
 TEST(IncompleteRun, TextSummarySaysWhereItStopped) {
   TempDir dir("drycut_incomplete_text");
   write_file(dir.path / "STOPS.MPF", kStops);
