@@ -2,6 +2,8 @@
 // which blocks join a run, what breaks it, the order of what passes, the flush window.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "interp/block_compressor.hpp"
 #include "interp_test_support.hpp"
 
@@ -53,27 +55,33 @@ TEST(BlockCompressor, CompofAndNonSimpleBlocksPassUnchanged) {
     EXPECT_LT((m[i].curve->start() - m[i - 1].curve->end()).norm(), 1e-12) << "the path stays connected at " << i;
 }
 
-TEST(BlockCompressor, CentreFeedRatiosOfCompensatedBlocksDoNotBreakTheRun) {
-  // Under G41/G42 with CFC the compensation stage scales each block's feed by its own tool-centre
-  // to contour length ratio, which differs by a few per mille from chord to chord: the run holds
-  // as long as the contour feed and the centre feed stay within MD20172 (the profile's 1 mm/s
-  // here allows far more than these 0.4 % of 50 mm/s).
+// Ten X blocks under COMPCAD, each feed block edited as the compensation stage or a 5-axis post
+// would change it (`edit(element, k)`, k = 0.. the feed block's index), through the compressor.
+std::vector<PathElement> compressed_ten_blocks(const std::function<void(PathElement&, int)>& edit) {
   const auto profile = testing::test_profile();  // the stage keeps a reference
   auto run = testing::run_program("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + x_blocks(1, 10) + "M30\n", profile);
-  ASSERT_FALSE(run->alarm);
+  EXPECT_FALSE(run->alarm);
   CollectingSink out;
   BlockCompressor stage(out, profile);
   int k = 0;
   for (auto& e : run->sink.elements) {
     PathElement c(e);
-    if (c.is_motion() && !c.rapid) {
-      c.feed_scale = 1.04 + 0.001 * (k++ % 4);
-      c.feed_mm_s *= c.feed_scale;
-    }
+    if (c.is_motion() && !c.rapid) edit(c, k++);
     stage.consume(std::move(c));
   }
   stage.finish();
-  const auto m = out.motions();
+  return out.motions();
+}
+
+TEST(BlockCompressor, CentreFeedRatiosOfCompensatedBlocksDoNotBreakTheRun) {
+  // Under G41/G42 with CFC the compensation stage scales each block's feed by its own tool-centre
+  // to contour length ratio, which differs by a few per mille from chord to chord: the run holds
+  // as long as the contour feed and the centre feed stay within MD20172 (the profile's 1 mm/s
+  // here allows far more than these 0.4 % of 50 mm/s).
+  const auto m = compressed_ten_blocks([](PathElement& c, int k) {
+    c.feed_scale = 1.04 + 0.001 * (k % 4);
+    c.feed_mm_s *= c.feed_scale;
+  });
   ASSERT_EQ(m.size(), 2u);  // the G0, then one span of all ten blocks
   EXPECT_EQ(m[1].compressed_blocks, 10u);
 }
@@ -82,23 +90,10 @@ TEST(BlockCompressor, FurtherAxesOfTheBlocksMoveWithTheirSpan) {
   // Ten compressible blocks, each turning C by 0.5 deg and blocks 5..10 A by 1 deg: the span that
   // replaces them starts C where the first block found it (30) and turns it 10 x 0.5 = 5 deg, A
   // from where block 5 found it (0) by 6 x 1 = 6 deg.
-  const auto profile = testing::test_profile();  // the stage keeps a reference
-  auto run = testing::run_program("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + x_blocks(1, 10) + "M30\n", profile);
-  ASSERT_FALSE(run->alarm);
-  CollectingSink out;
-  BlockCompressor stage(out, profile);
-  int k = 0;
-  for (auto& e : run->sink.elements) {
-    PathElement c(e);
-    if (c.is_motion() && !c.rapid) {
-      c.extra_axes.push_back({5, "C", 30.0 + 0.5 * k, 0.5, false});
-      if (k >= 4) c.extra_axes.push_back({3, "A", 1.0 * (k - 4), 1.0, false});
-      ++k;
-    }
-    stage.consume(std::move(c));
-  }
-  stage.finish();
-  const auto m = out.motions();
+  const auto m = compressed_ten_blocks([](PathElement& c, int k) {
+    c.extra_axes.push_back({5, "C", 30.0 + 0.5 * k, 0.5, false});
+    if (k >= 4) c.extra_axes.push_back({3, "A", 1.0 * (k - 4), 1.0, false});
+  });
   ASSERT_EQ(m.size(), 2u);
   ASSERT_EQ(m[1].compressed_blocks, 10u);
   ASSERT_EQ(m[1].extra_axes.size(), 2u);
