@@ -156,12 +156,14 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       }
       case 41: case 42: {
         // Checked in execute_motion: a D in the same block counts (the control applies D first).
+        if (state_.compensation == CompensationSide::None) compensation_selection_pending_ = true;
         state_.compensation = code == 41 ? CompensationSide::Left : CompensationSide::Right;
         ctx.compensation_changed = true;
         ctx.compensation_column = g.column;
         continue;
       }
       case 40:
+        compensation_selection_pending_ = false;
         state_.compensation = CompensationSide::None;
         ctx.compensation_changed = true;
         ctx.compensation_column = g.column;
@@ -585,12 +587,31 @@ void Interpreter::emit_clock_wait(const BlockContext& ctx) {
 }
 
 void Interpreter::emit(PathElement&& element) {
+  if (compensation_selection_pending_ && element.is_motion() && element.curve) defer_compensation_selection(element);
   add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;
     has_last_tangent_ = true;
   }
   sink_.consume(std::move(element));
+}
+
+void Interpreter::defer_compensation_selection(PathElement& element) {
+  // W1 "Tool radius compensation": a selection block that moves no axis of the working plane
+  // (G41 G1 Z-3) selects nothing; the compensation starts with the next block that does, which
+  // becomes the approach. (Under a tilting frame the plane is the tilted one: not deferred.)
+  if (element.compensation.side == CompensationSide::None || element.compensation.tilted ||
+      element.kind != ElementKind::Line) {
+    compensation_selection_pending_ = false;
+    return;
+  }
+  const PlaneIndices plane = state_.plane_indices();
+  const Eigen::Vector3d d = element.curve->end() - element.curve->start();
+  if (std::hypot(d[plane.first], d[plane.second]) > 1e-9) {
+    compensation_selection_pending_ = false;
+    return;
+  }
+  element.compensation.side = CompensationSide::None;
 }
 
 void Interpreter::add_nominal_time(const PathElement& e) {

@@ -136,6 +136,9 @@ class Interpreter {
   void end_spline_run(const Eigen::Vector3d* next_direction);
   void emit(PathElement&& element);  // by rvalue: one PathElement move less per element
   void emit_clock_wait(const BlockContext& ctx);
+  // G41/G42 selected, no block has moved in the working plane since: such an element is not
+  // compensated yet (the selection waits for the first block that moves in the plane).
+  void defer_compensation_selection(PathElement& element);
   // 10753/10754: G41/G42 selected or G40 deselected in a circle, spline or polynomial block.
   void refuse_compensation_change_on_curve(const BlockContext& ctx, bool moves) const;
   void emit_preprocessing_stop(BlockContext& ctx, const char* label);  // STOPRE, explicit or implicit
@@ -242,6 +245,7 @@ class Interpreter {
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
+  bool compensation_selection_pending_ = false;  // G41/G42 selected, not yet moved in the plane
   std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
   // The master spindle's last M5: when (the nominal clock) and from which speed it braked.
   struct SpindleBraking {
