@@ -73,6 +73,7 @@ struct ProducerMark {
   size_t diagnostics = 0;
   uint64_t blocks = 0;
   uint64_t lines = 0;
+  size_t programs = 0;  // programs_used() so far (the commands used are not cut back: a set)
 };
 
 }  // namespace
@@ -87,7 +88,8 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
 
   // Interpretation on this thread, everything after it on a worker: the same stream, in parallel.
   interp::PipelinedSink<ProducerMark> pipe(sink, [&] {
-    return ProducerMark{outcome.diagnostics.items().size(), loader.blocks_executed(), loader.steps()};
+    return ProducerMark{outcome.diagnostics.items().size(), loader.blocks_executed(), loader.steps(),
+                        loader.programs_used().size()};
   });
   interp::Interpreter interpreter(profile, pipe, outcome.diagnostics);
   interp::InterpreterStateView state_view(interpreter, profile);
@@ -111,10 +113,15 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
     // After an alarm this still hands the sinks what they hold, so nothing written is lost.
     interpreter.finish();
   } catch (const AlarmError& e) {
-    // The control stops at the first alarm: one raised while finishing after it is a follow-up.
+    // The control stops at the first alarm: one raised while finishing after it is a follow-up,
+    // and so is one after an element still in the pipe that raises downstream.
+    pipe.drain();
     if (!outcome.alarm && !pipe.failure()) outcome.diagnostics.report(e.alarm());
     outcome.alarm = true;
   }
+  // The worker has consumed all it was given (finishing may have stopped before handing over the
+  // rest): what failed downstream is settled from here on.
+  pipe.drain();
   outcome.blocks = loader.blocks_executed();
   outcome.lines = loader.steps();
   if (const auto& failure = pipe.failure()) {
@@ -127,6 +134,8 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
     outcome.lines = failure->mark.lines;
   }
   outcome.programs_used = loader.programs_used();
+  if (const auto& failure = pipe.failure(); failure && failure->mark.programs < outcome.programs_used.size())
+    outcome.programs_used.resize(failure->mark.programs);
   outcome.commands_used = loader.commands_used();
   return outcome;
 }

@@ -84,7 +84,11 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   ctx.simple = is_simple_block(block, extra_axes_);
   ctx.compensation_before = state_.compensation;
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
-  if (block.main_run_read) emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
+  if (block.main_run_read) {
+    // The stop comes after everything before the read, a spline run's pending spans included.
+    if (spline_.active()) end_spline_run(nullptr);
+    emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
+  }
   apply_system_writes(block);
   apply_g_words(ctx);
   apply_commands(ctx);

@@ -14,7 +14,9 @@
 //   an element, the worker stops, keeps the alarm and that element's mark, and drops the rest;
 //   the producer's next consume() throws the alarm, so the interpreter stops as it would have
 //   (only a few blocks later). The caller then cuts its own records back to the mark: warnings
-//   of the blocks the producer ran ahead are not the run's.
+//   of the blocks the producer ran ahead are not the run's (app/program_pipeline.cpp cuts back
+//   warnings, blocks, lines and programs used; the set of commands used may hold a few more).
+//   An alarm raised downstream without a location gets the failing element's block.
 // - An alarm of the producer itself comes from a later block than every element it handed over:
 //   drain() lets the worker finish those first, and an alarm they raise takes precedence.
 // - Any other exception (I/O, bad_alloc) on the worker is rethrown to the producer as it is.
@@ -139,7 +141,7 @@ class PipelinedSink final : public ElementSink {
       try {
         downstream_.consume(std::move(batch.elements[i]));
       } catch (const AlarmError& e) {
-        failure_.emplace(Failure{e, batch.marks[i]});
+        failure_.emplace(Failure{located(e, batch.elements[i].source), batch.marks[i]});
         stopped_ = true;
         failed_.store(true, std::memory_order_release);
         return;
@@ -150,6 +152,16 @@ class PipelinedSink final : public ElementSink {
         return;
       }
     }
+  }
+
+  // An alarm of the downstream that does not say where (a geometry stage's) belongs to the block
+  // of the element it was raised on, as the interpreter would have located it sequentially.
+  static AlarmError located(const AlarmError& e, const BlockRef& source) {
+    if (!e.alarm().where.file.empty() || !source.file) return e;
+    Alarm a = e.alarm();
+    a.where = {*source.file, source.line, 0};
+    a.block = source.text;
+    return AlarmError(std::move(a));
   }
 
   void rethrow_fatal() {

@@ -295,6 +295,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
   auto scan_line = [&]() {
     for (;;) {
       if (!f.reader.next(raw_)) return false;
+      if (raw_.position.offset > f.start.offset && is_program_header(raw_.bytes)) return false;  // the next program
       position_ = raw_.position;
       if (raw_.too_long) continue;
       decode_line_to_utf8(raw_.bytes, text_);
@@ -421,6 +422,7 @@ std::optional<LinePosition> ProgramLoader::find_label_between(const std::string&
   ParsedLine parsed;
   LineParser parser;
   while (!found && f.reader.next(raw) && raw.position.offset < before) {
+    if (raw.position.offset > from.offset && is_program_header(raw.bytes)) break;  // the next program
     if (raw.too_long) continue;
     decode_line_to_utf8(raw.bytes, line);
     if (is_blank_or_comment(line)) continue;

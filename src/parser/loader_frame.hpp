@@ -72,6 +72,13 @@ inline std::string_view trimmed(std::string_view s) {
   return s;
 }
 
+// A program header line "%_N_NAME_MPF" / "%_N_NAME_SPF": in an archive file, where the next program
+// begins (reading, label searches and forward jumps end there).
+inline bool is_program_header(std::string_view bytes) {
+  while (!bytes.empty() && (bytes.front() == ' ' || bytes.front() == '\t')) bytes.remove_prefix(1);
+  return bytes.size() > 4 && bytes[0] == '%' && bytes[1] == '_' && (bytes[2] == 'N' || bytes[2] == 'n') && bytes[3] == '_';
+}
+
 inline bool is_blank_or_comment(std::string_view line) {
   const std::string_view t = trimmed(line);
   return t.empty() || t.front() == ';' || t.front() == '%';

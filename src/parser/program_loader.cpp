@@ -87,17 +87,6 @@ std::vector<std::string> ProgramLoader::commands_used() const {
   return out;
 }
 
-namespace {
-
-// A program header line "%_N_NAME_MPF" / "%_N_NAME_SPF": in an archive file, where the next program
-// begins.
-bool is_program_header(std::string_view bytes) {
-  while (!bytes.empty() && (bytes.front() == ' ' || bytes.front() == '\t')) bytes.remove_prefix(1);
-  return bytes.size() > 4 && bytes[0] == '%' && bytes[1] == '_' && (bytes[2] == 'N' || bytes[2] == 'n') && bytes[3] == '_';
-}
-
-}  // namespace
-
 bool ProgramLoader::read_line(Frame& f) {
   for (;;) {
     bool got = f.reader.next(raw_);
