@@ -81,7 +81,8 @@ std::optional<ArchiveSection> find_archive_section(const std::filesystem::path& 
   while (reader.next(raw)) {
     std::string_view t = raw.bytes;
     while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
-    if (t.empty() || t.front() != '%') continue;
+    // Only a program header ("%_N_...") begins a program; a bare "%" (a tape leader) does not.
+    if (t.size() < 5 || t[0] != '%' || t[1] != '_' || (t[2] != 'N' && t[2] != 'n') || t[3] != '_') continue;
     if (open) {
       (*open)->end = raw.position.offset;
       open = nullptr;
