@@ -244,7 +244,10 @@ double as_number(const Value& v, uint32_t column) {
 std::string as_text(const Value& v) {
   switch (v.kind) {
     case ValueKind::Number:
-      return v.character ? std::string(1, static_cast<char>(static_cast<unsigned char>(v.number))) : number_to_text(v.number);
+      // A CHAR's code as its character (a code outside 0..255, written as a number, as a number).
+      if (v.character && v.number >= 0 && v.number <= 255)
+        return std::string(1, static_cast<char>(static_cast<unsigned char>(v.number)));
+      return number_to_text(v.number);
     case ValueKind::Frame: return "FRAME";
     default: return v.text;
   }
