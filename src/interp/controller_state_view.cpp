@@ -96,7 +96,9 @@ std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<
   for (const auto& e : tool->edges) {
     if (e.d != indices[1].number) continue;
     switch (parameter) {
+      case 1: return static_cast<double>(e.type);
       case 3: return e.length_mm - e.length_wear_mm;
+      case 4: return e.length2_mm;
       case 6: return e.radius_mm - e.radius_wear_mm;
       case 12: return e.length_wear_mm;
       case 15: return e.radius_wear_mm;

@@ -17,6 +17,15 @@ using namespace detail;
 
 Vector3d Interpreter::tool_length_vector() const {
   Vector3d length = Vector3d::Zero();
+  const ToolOffsets& o = tools_.offsets();
+  if (o.type >= 500 && o.type <= 599) {
+    // A turning tool (W1, "Tool length compensation"): length 1 along the plane's ordinate,
+    // length 2 along its abscissa (G18: X and Z; G17: Y and X; G19: Z and Y).
+    const PlaneIndices plane = state_.plane_indices();
+    length[plane.second] = o.length_mm;
+    length[plane.first] = o.length2_mm;
+    return length;
+  }
   length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
   if (tool_orientation_.isIdentity()) return length;
   // A swivel head (TCOABS/TCOFR): the length along the swivelled plane normal.

@@ -111,7 +111,7 @@ void ToolState::activate_edge(int d, std::vector<ToolNotice>& notices) {
   }
   for (const auto& e : tool->edges) {
     if (e.d == d) {
-      offsets_ = {e.length_mm, e.radius_mm, e.teeth};
+      offsets_ = {e.length_mm, e.radius_mm, e.teeth, e.type, e.length2_mm};
       return;
     }
   }
@@ -138,7 +138,9 @@ bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
   // The control adds each wear value to its geometry value (Fundamentals, "Tool offset data":
   // DP12 wear of length 1, DP15 wear of the radius).
   switch (parameter) {
+    case 1: edge->type = value >= 0 && value <= 999 ? static_cast<int>(value) : 0; break;
     case 3: edge->length_mm = value + edge->length_wear_mm; break;
+    case 4: edge->length2_mm = value; break;
     case 6: edge->radius_mm = value + edge->radius_wear_mm; break;
     case 12:
       edge->length_mm += value - edge->length_wear_mm;
@@ -155,6 +157,8 @@ bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
   if (has_tool() && edge_ == d && find(*active_) && find(*active_)->number == t) {
     offsets_.length_mm = edge->length_mm;
     offsets_.radius_mm = edge->radius_mm;
+    offsets_.type = edge->type;
+    offsets_.length2_mm = edge->length2_mm;
   }
   return true;
 }

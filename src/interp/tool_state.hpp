@@ -39,6 +39,8 @@ struct ToolOffsets {
   double length_mm = 0.0;  // length 1: $TC_DP3 + wear $TC_DP12
   double radius_mm = 0.0;  // radius: $TC_DP6 + wear $TC_DP15
   int teeth = 0;           // $TC_DPNT, number of teeth (G95 FZ); 0 = not known
+  int type = 0;            // $TC_DP1 tool type (0: not given, a milling tool)
+  double length2_mm = 0.0; // $TC_DP4 length 2 (a turning tool's length in the plane's abscissa)
 };
 
 class ToolState {
@@ -53,9 +55,9 @@ class ToolState {
   // The tool change (M6, or T with MD22550 = 0); `d` is a D written in the same block.
   void change_tool(std::optional<int> d, std::vector<ToolNotice>& notices);
 
-  // $TC_DP<parameter>[t, d] = value for the tool numbered t: 3 = length 1, 6 = radius, 12 and 15
-  // their wear values, added to them (all mm); other parameters are accepted and do not change
-  // the path. A missing tool or edge is
+  // $TC_DP<parameter>[t, d] = value for the tool numbered t: 1 = tool type, 3 = length 1,
+  // 4 = length 2, 6 = radius, 12 and 15 the wear of length 1 and radius, added to them (mm);
+  // other parameters are accepted and do not change the path. A missing tool or edge is
   // created. Returns false for a parameter or index out of the control's range.
   bool set_edge_parameter(int parameter, int t, int d, double value);
   // $TC_DPNT[t, d] = teeth. As on the control (Fundamentals, "Tooth feedrate (G95 FZ)") the

@@ -164,6 +164,11 @@ ToolEdge read_edge(const json& node, const std::string& path) {
     if (*n < 0 || *n > 32000) r.fail("teeth", "must be in [0, 32000]");
     e.teeth = static_cast<int>(*n);
   }
+  if (auto n = r.integer("type")) {
+    if (*n < 0 || *n > 999) r.fail("type", "must be in [0, 999] ($TC_DP1)");
+    e.type = static_cast<int>(*n);
+  }
+  if (auto v = r.quantity("length2", Dimension::Length)) e.length2_mm = *v;
   r.reject_unknown_keys();
   return e;
 }
@@ -331,6 +336,8 @@ std::string profile_to_json(const MachineProfile& p) {
     for (const auto& e : t.edges) {
       json edge{{"d", e.d}, {"radius_mm", e.radius_mm}, {"length_mm", e.length_mm}};
       if (e.teeth > 0) edge["teeth"] = e.teeth;
+      if (e.type > 0) edge["type"] = e.type;
+      if (e.length2_mm != 0) edge["length2_mm"] = e.length2_mm;
       edges.push_back(edge);
     }
     tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});

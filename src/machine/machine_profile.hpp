@@ -71,6 +71,11 @@ struct ToolEdge {
   // table already holds the sums).
   double radius_wear_mm = 0;
   double length_wear_mm = 0;
+  // $TC_DP1 tool type (120 end mill, 500..599 turning tools ...; 0 not given: a milling tool) and
+  // $TC_DP4 length 2: a turning tool's lengths act in the plane (Function Manual W1, "Tool length
+  // compensation": G18 length 1 in X, length 2 in Z), a milling tool's length 1 along its normal.
+  int type = 0;
+  double length2_mm = 0;
 };
 
 struct Tool {

@@ -43,7 +43,7 @@ int integer_cell(const std::string& text, int low, int high, const std::string& 
 }  // namespace
 
 std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string& origin) {
-  static const std::vector<std::string> kColumns{"number", "name", "d", "length_mm", "radius_mm", "teeth"};
+  static const std::vector<std::string> kColumns{"number", "name", "d", "length_mm", "radius_mm", "teeth", "type", "length2_mm"};
   std::istringstream in(text);
   std::string line;
   std::map<std::string, size_t> column;
@@ -56,7 +56,7 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
     if (column.empty()) {
       for (size_t i = 0; i < cells.size(); ++i) {
         if (std::find(kColumns.begin(), kColumns.end(), cells[i]) == kColumns.end())
-          throw ProfileError(where + ": unknown column '" + cells[i] + "' (columns: number,name,d,length_mm,radius_mm,teeth)");
+          throw ProfileError(where + ": unknown column '" + cells[i] + "' (columns: number,name,d,length_mm,radius_mm,teeth,type,length2_mm)");
         column[cells[i]] = i;
       }
       if (!column.count("number") || !column.count("d")) throw ProfileError(where + ": the header needs columns number and d");
@@ -73,6 +73,8 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
     if (!cell("radius_mm").empty()) edge.radius_mm = number_cell(cell("radius_mm"), where + " radius_mm");
     if (edge.radius_mm < 0) throw ProfileError(where + " radius_mm: must be >= 0");
     if (!cell("teeth").empty()) edge.teeth = integer_cell(cell("teeth"), 0, 32000, where + " teeth");
+    if (!cell("type").empty()) edge.type = integer_cell(cell("type"), 0, 999, where + " type");
+    if (!cell("length2_mm").empty()) edge.length2_mm = number_cell(cell("length2_mm"), where + " length2_mm");
     const std::string name = cell("name").empty() ? std::to_string(number) : cell("name");
     auto it = std::find_if(tools.begin(), tools.end(), [&](const Tool& t) { return t.number == number; });
     if (it == tools.end()) {
