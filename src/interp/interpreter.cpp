@@ -669,9 +669,8 @@ void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, b
 }
 
 void Interpreter::execute_motion(BlockContext& ctx) {
-  if (ctx.compensation_changed && state_.compensation != CompensationSide::None &&
-      (!tools_.has_tool() || tools_.edge() == 0))
-    raise(ctx, 10750, tools_.has_tool() ? "D0 is active" : "no tool is active", ctx.compensation_column);
+  if (ctx.compensation_changed && state_.compensation != CompensationSide::None && !tools_.has_tool())
+    raise(ctx, 10750, "no tool is active", ctx.compensation_column);
   // Dynamics changes are told to the planner once, where they happen.
   if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile ||
       state_.dynamic_group != last_dynamics_.group || state_.axis_limits != last_dynamics_.limits) {

@@ -111,9 +111,11 @@ TEST(Interpreter, CompensationNeedsToolAndEdge) {
   auto none = run_program("G42 G1 X10 F100\nM30\n");
   ASSERT_TRUE(none->alarm);
   EXPECT_EQ(none->alarm->number, 10750);
+  // D0 with a tool in the spindle selects no offset (W1): G41 runs with radius 0, no alarm.
   auto d0 = run_program("T=\"FR_4\"\nM6\nD0\nG41 G1 X10 F100\nM30\n");
-  ASSERT_TRUE(d0->alarm);
-  EXPECT_EQ(d0->alarm->number, 10750);
+  ASSERT_FALSE(d0->alarm) << d0->alarm->format();
+  EXPECT_DOUBLE_EQ(d0->sink.motions()[0].compensation.radius_mm, 0.0);
+  EXPECT_NEAR(d0->sink.motions()[0].curve->end().x(), 10.0, 1e-12);
   auto ok = run_program("T=\"FR_4\"\nM6\nG42 G1 X10 F100\nM30\n");
   ASSERT_FALSE(ok->alarm) << ok->alarm->format();
   const auto m = ok->sink.motions();

@@ -47,11 +47,11 @@ TEST(ToolState, CuttingEdgeDefaultAfterAChange) {
   auto one = run_program("T2\nM6\nG41 G1 X10 F100\nM30\n", p);
   ASSERT_FALSE(one->alarm) << one->alarm->format();
   EXPECT_DOUBLE_EQ(one->sink.motions()[0].compensation.radius_mm, 3.0);
-  // MD20270 = 0: no edge after the change; G41 then is alarm 10750 (D0 active).
+  // MD20270 = 0: no edge after the change (D0); G41 then compensates nothing (radius 0).
   p.cutting_edge_default = 0;
   auto none = run_program("T2\nM6\nG41 G1 X10 F100\nM30\n", p);
-  ASSERT_TRUE(none->alarm);
-  EXPECT_EQ(none->alarm->number, 10750);
+  ASSERT_FALSE(none->alarm) << none->alarm->format();
+  EXPECT_DOUBLE_EQ(none->sink.motions()[0].compensation.radius_mm, 0.0);
   // MD20270 = -1: the old edge number stays: T2 D2 active, change to T2 again -> D2 (r 4).
   p.cutting_edge_default = -1;
   auto keep = run_program("T2 M6 D2\nT2\nM6\nG41 G1 X10 F100\nM30\n", p);
