@@ -21,18 +21,26 @@ std::string num(double v) {
   return buf;
 }
 
+bool finite(const XY& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+}  // namespace
+
 // Maps data to pixels.
-struct Frame {
+struct SvgChart::Frame {
   double x0, x1, y0, y1;     // data range shown
   double px0, px1, py0, py1; // pixel box (py0 = bottom)
   double X(double x) const { return px0 + (x - x0) / (x1 - x0) * (px1 - px0); }
   double Y(double y) const { return py0 - (y - y0) / (y1 - y0) * (py0 - py1); }
 };
 
-bool finite(const XY& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+// Legend entries: a swatch drawn at (x, y) and a text; they flow in rows across the top margin.
+struct SvgChart::LegendEntry {
+  std::function<std::string(double, double)> swatch;
+  std::string text;
+};
 
 // Polylines for a line, split where a point is not finite.
-std::vector<std::string> polylines(const Frame& f, const std::vector<XY>& pts) {
+std::vector<std::string> SvgChart::polylines(const Frame& f, const std::vector<XY>& pts) {
   std::vector<std::string> out;
   std::string cur;
   size_t n = 0;
@@ -53,8 +61,6 @@ std::vector<std::string> polylines(const Frame& f, const std::vector<XY>& pts) {
   close();
   return out;
 }
-
-}  // namespace
 
 SvgChart::SvgChart(ChartOptions options) : options_(std::move(options)) {}
 
@@ -108,29 +114,25 @@ SvgChart::Bounds SvgChart::data_bounds() const {
   return b;
 }
 
-std::string SvgChart::render() const {
-  const double W = options_.width, H = options_.height;
-  // Legend entries: a swatch drawn at (x, y) and a text; they flow in rows across the top margin.
-  struct Entry {
-    std::function<std::string(double, double)> swatch;
-    std::string text;
-  };
-  std::vector<Entry> legend;
+std::vector<SvgChart::LegendEntry> SvgChart::legend_entries() const {
+  std::vector<LegendEntry> legend;
   for (const auto& l : lines_)
     if (!l.legend.empty())
       legend.push_back({[&l](double x, double y) {
-                          return "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 20) + "\" y2=\"" +
-                                 num(y) + "\" stroke=\"" + l.colour + "\" stroke-width=\"" + num(std::max(2.0, l.width)) +
-                                 "\"" + (l.dashed ? " stroke-dasharray=\"6 4\"" : "") + "/>";
+                          return "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 20) +
+                                 "\" y2=\"" + num(y) + "\" stroke=\"" + l.colour + "\" stroke-width=\"" +
+                                 num(std::max(2.0, l.width)) + "\"" +
+                                 (l.dashed ? " stroke-dasharray=\"6 4\"" : "") + "/>";
                         },
                         l.legend});
   for (const auto& c : coloured_)
     if (!c.legend.empty())
       legend.push_back({[](double x, double y) {
-                          return "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 10) + "\" y2=\"" +
-                                 num(y) + "\" stroke=\"" + bin_colour(2) + "\" stroke-width=\"3\"/><line x1=\"" +
-                                 num(x + 10) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 20) + "\" y2=\"" + num(y) +
-                                 "\" stroke=\"" + bin_colour(kColourBins - 2) + "\" stroke-width=\"3\"/>";
+                          return "<line x1=\"" + num(x) + "\" y1=\"" + num(y) + "\" x2=\"" + num(x + 10) +
+                                 "\" y2=\"" + num(y) + "\" stroke=\"" + bin_colour(2) +
+                                 "\" stroke-width=\"3\"/><line x1=\"" + num(x + 10) + "\" y1=\"" + num(y) +
+                                 "\" x2=\"" + num(x + 20) + "\" y2=\"" + num(y) + "\" stroke=\"" +
+                                 bin_colour(kColourBins - 2) + "\" stroke-width=\"3\"/>";
                         },
                         c.legend});
   for (const auto& m : markers_)
@@ -146,18 +148,25 @@ std::string SvgChart::render() const {
                                "\" r=\"6\"/>";
                       },
                       "feed dip (number = rank, see table)"});
-  std::vector<XY> legend_at;  // swatch position per entry
-  {
-    double lx = kLeft, ly = 42;
-    for (const auto& e : legend) {
-      const double w = 26 + 7.0 * static_cast<double>(e.text.size()) + 18;
-      if (lx > kLeft && lx + w > W - kRight) lx = kLeft, ly += 18;
-      legend_at.push_back({lx, ly});
-      lx += w;
-    }
-  }
-  const double top = kTop + (legend_at.empty() ? 0 : legend_at.back().y - 42);
+  return legend;
+}
 
+// The swatch position per legend entry: left to right, a new row when the next one would not fit.
+std::vector<XY> SvgChart::legend_positions(const std::vector<LegendEntry>& legend, double width) {
+  std::vector<XY> legend_at;
+  double lx = kLeft, ly = 42;
+  for (const auto& e : legend) {
+    const double w = 26 + 7.0 * static_cast<double>(e.text.size()) + 18;
+    if (lx > kLeft && lx + w > width - kRight) lx = kLeft, ly += 18;
+    legend_at.push_back({lx, ly});
+    lx += w;
+  }
+  return legend_at;
+}
+
+// The plot box below the legend rows and the data range it shows.
+SvgChart::Frame SvgChart::plot_frame(double top) const {
+  const double W = options_.width, H = options_.height;
   Frame f{};
   f.px0 = kLeft;
   f.px1 = W - kRight - (colour_bar_ ? kBarSpace : 0);
@@ -179,107 +188,147 @@ std::string SvgChart::render() const {
     const double hx = 0.5 * (f.px1 - f.px0) / s, hy = 0.5 * (f.py0 - f.py1) / s;
     f.x0 = cx - hx, f.x1 = cx + hx, f.y0 = cy - hy, f.y1 = cy + hy;
   }
+  return f;
+}
 
-  const std::string id = html_escape(options_.id);
-  std::string o;
+// The <svg> element, the clip path of the plot box and the title.
+void SvgChart::render_head(std::string& o, const Frame& f, const std::string& id) const {
+  const double W = options_.width, H = options_.height;
   // Inline SVG in HTML5 needs no xmlns (and the page must hold no URL at all).
-  o += "<svg id=\"" + id + "\" class=\"chart\" viewBox=\"0 0 " + num(W) + " " +
-       num(H) + "\" width=\"" + num(W) + "\" height=\"" + num(H) + "\" role=\"img\" aria-label=\"" +
-       html_escape(options_.title) + "\">\n";
-  o += "<defs><clipPath id=\"" + id + "-clip\"><rect x=\"" + num(f.px0) + "\" y=\"" + num(f.py1) + "\" width=\"" +
-       num(f.px1 - f.px0) + "\" height=\"" + num(f.py0 - f.py1) + "\"/></clipPath></defs>\n";
+  o += "<svg id=\"" + id + "\" class=\"chart\" viewBox=\"0 0 " + num(W) + " " + num(H) + "\" width=\"" +
+       num(W) + "\" height=\"" + num(H) + "\" role=\"img\" aria-label=\"" + html_escape(options_.title) +
+       "\">\n";
+  o += "<defs><clipPath id=\"" + id + "-clip\"><rect x=\"" + num(f.px0) + "\" y=\"" + num(f.py1) +
+       "\" width=\"" + num(f.px1 - f.px0) + "\" height=\"" + num(f.py0 - f.py1) + "\"/></clipPath></defs>\n";
   o += "<text class=\"title\" x=\"" + num(kLeft) + "\" y=\"22\">" + html_escape(options_.title) + "</text>\n";
+}
 
+void SvgChart::render_axes(std::string& o, const Frame& f) const {
+  const double H = options_.height;
   // Grid and ticks.
   const double xstep = nice_tick_step(f.x0, f.x1, 8), ystep = nice_tick_step(f.y0, f.y1, 6);
   o += "<g class=\"grid\">";
   for (double x : nice_ticks(f.x0, f.x1, 8))
-    o += "<line x1=\"" + num(f.X(x)) + "\" y1=\"" + num(f.py0) + "\" x2=\"" + num(f.X(x)) + "\" y2=\"" + num(f.py1) + "\"/>";
+    o += "<line x1=\"" + num(f.X(x)) + "\" y1=\"" + num(f.py0) + "\" x2=\"" + num(f.X(x)) + "\" y2=\"" +
+         num(f.py1) + "\"/>";
   for (double y : nice_ticks(f.y0, f.y1, 6))
-    o += "<line x1=\"" + num(f.px0) + "\" y1=\"" + num(f.Y(y)) + "\" x2=\"" + num(f.px1) + "\" y2=\"" + num(f.Y(y)) + "\"/>";
+    o += "<line x1=\"" + num(f.px0) + "\" y1=\"" + num(f.Y(y)) + "\" x2=\"" + num(f.px1) + "\" y2=\"" +
+         num(f.Y(y)) + "\"/>";
   o += "</g>\n<g class=\"ticks\">";
   for (double x : nice_ticks(f.x0, f.x1, 8))
-    o += "<text x=\"" + num(f.X(x)) + "\" y=\"" + num(f.py0 + 17) + "\" text-anchor=\"middle\">" + format_tick(x, xstep) +
-         "</text>";
+    o += "<text x=\"" + num(f.X(x)) + "\" y=\"" + num(f.py0 + 17) + "\" text-anchor=\"middle\">" +
+         format_tick(x, xstep) + "</text>";
   for (double y : nice_ticks(f.y0, f.y1, 6))
-    o += "<text x=\"" + num(f.px0 - 6) + "\" y=\"" + num(f.Y(y) + 4) + "\" text-anchor=\"end\">" + format_tick(y, ystep) +
-         "</text>";
+    o += "<text x=\"" + num(f.px0 - 6) + "\" y=\"" + num(f.Y(y) + 4) + "\" text-anchor=\"end\">" +
+         format_tick(y, ystep) + "</text>";
   o += "</g>\n";
   o += "<text class=\"axis\" x=\"" + num(0.5 * (f.px0 + f.px1)) + "\" y=\"" + num(H - 12) +
        "\" text-anchor=\"middle\">" + html_escape(options_.x_label) + "</text>\n";
   o += "<text class=\"axis\" transform=\"translate(16," + num(0.5 * (f.py0 + f.py1)) +
        ") rotate(-90)\" text-anchor=\"middle\">" + html_escape(options_.y_label) + "</text>\n";
+}
 
+// Lines, coloured lines and markers.
+void SvgChart::render_data(std::string& o, const Frame& f, const std::string& id) const {
   // Data, clipped to the frame.
-  o += "<g clip-path=\"url(#" + id + "-clip)\" fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
+  o += "<g clip-path=\"url(#" + id +
+       "-clip)\" fill=\"none\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
   for (const auto& l : lines_)
     for (const auto& pl : polylines(f, l.points))
       o += "<polyline class=\"series\" stroke=\"" + l.colour + "\" stroke-width=\"" + num(l.width) + "\"" +
            (l.dashed ? " stroke-dasharray=\"6 4\"" : "") + " points=\"" + pl + "\"/>\n";
-  for (const auto& c : coloured_) {
-    // Runs of segments in one colour bin become one polyline.
-    size_t i = 0;
-    while (i + 1 < c.points.size()) {
-      if (!finite(c.points[i]) || !finite(c.points[i + 1])) {
-        ++i;
-        continue;
-      }
-      const int bin = colour_bin(0.5 * (c.fractions[i] + c.fractions[i + 1]));
-      std::string pts = num(f.X(c.points[i].x)) + ',' + num(f.Y(c.points[i].y));
-      size_t j = i;
-      while (j + 1 < c.points.size() && finite(c.points[j + 1]) &&
-             colour_bin(0.5 * (c.fractions[j] + c.fractions[j + 1])) == bin) {
-        ++j;
-        pts += ' ' + num(f.X(c.points[j].x)) + ',' + num(f.Y(c.points[j].y));
-      }
-      o += "<polyline class=\"series\" stroke=\"" + bin_colour(bin) + "\" stroke-width=\"" + num(c.width) +
-           "\" points=\"" + pts + "\"/>\n";
-      i = j;
-    }
-  }
+  for (const auto& c : coloured_) render_coloured_line(o, f, c);
   for (const auto& m : markers_) {
     o += "<g class=\"markers\" fill=\"" + m.colour + "\" stroke=\"none\">";
     for (const XY& p : m.points)
-      if (finite(p)) o += "<circle cx=\"" + num(f.X(p.x)) + "\" cy=\"" + num(f.Y(p.y)) + "\" r=\"" + num(m.radius) + "\"/>";
+      if (finite(p))
+        o += "<circle cx=\"" + num(f.X(p.x)) + "\" cy=\"" + num(f.Y(p.y)) + "\" r=\"" + num(m.radius) +
+             "\"/>";
     o += "</g>\n";
   }
   o += "</g>\n";
+}
+
+void SvgChart::render_coloured_line(std::string& o, const Frame& f, const ColouredLine& c) {
+  // Runs of segments in one colour bin become one polyline.
+  size_t i = 0;
+  while (i + 1 < c.points.size()) {
+    if (!finite(c.points[i]) || !finite(c.points[i + 1])) {
+      ++i;
+      continue;
+    }
+    const int bin = colour_bin(0.5 * (c.fractions[i] + c.fractions[i + 1]));
+    std::string pts = num(f.X(c.points[i].x)) + ',' + num(f.Y(c.points[i].y));
+    size_t j = i;
+    while (j + 1 < c.points.size() && finite(c.points[j + 1]) &&
+           colour_bin(0.5 * (c.fractions[j] + c.fractions[j + 1])) == bin) {
+      ++j;
+      pts += ' ' + num(f.X(c.points[j].x)) + ',' + num(f.Y(c.points[j].y));
+    }
+    o += "<polyline class=\"series\" stroke=\"" + bin_colour(bin) + "\" stroke-width=\"" + num(c.width) +
+         "\" points=\"" + pts + "\"/>\n";
+    i = j;
+  }
+}
+
+// Callouts are drawn unclipped, over the data.
+void SvgChart::render_callouts(std::string& o, const Frame& f) const {
   for (const auto& c : callouts_) {
     if (!finite(c.at)) continue;
     const double x = f.X(c.at.x), y = f.Y(c.at.y);
-    o += "<g class=\"callout\"><title>" + html_escape(c.tooltip) + "</title><circle cx=\"" + num(x) + "\" cy=\"" +
-         num(y) + "\" r=\"7\"/><text x=\"" + num(x + 9) + "\" y=\"" + num(y - 8) + "\">" + html_escape(c.label) +
-         "</text></g>\n";
+    o += "<g class=\"callout\"><title>" + html_escape(c.tooltip) + "</title><circle cx=\"" + num(x) +
+         "\" cy=\"" + num(y) + "\" r=\"7\"/><text x=\"" + num(x + 9) + "\" y=\"" + num(y - 8) + "\">" +
+         html_escape(c.label) + "</text></g>\n";
   }
-  o += "<rect class=\"frame\" x=\"" + num(f.px0) + "\" y=\"" + num(f.py1) + "\" width=\"" + num(f.px1 - f.px0) +
-       "\" height=\"" + num(f.py0 - f.py1) + "\"/>\n";
+}
 
+void SvgChart::render_legend(std::string& o, const std::vector<LegendEntry>& legend,
+                             const std::vector<XY>& legend_at) {
   for (size_t k = 0; k < legend.size(); ++k)
     o += "<g class=\"legend\">" + legend[k].swatch(legend_at[k].x, legend_at[k].y) + "<text x=\"" +
-         num(legend_at[k].x + 26) + "\" y=\"" + num(legend_at[k].y + 4) + "\">" + html_escape(legend[k].text) +
-         "</text></g>";
+         num(legend_at[k].x + 26) + "\" y=\"" + num(legend_at[k].y + 4) + "\">" +
+         html_escape(legend[k].text) + "</text></g>";
   o += "\n";
+}
 
-  if (colour_bar_) {
-    // Gradient bar with its own ticks: the velocity colours of the coloured line.
-    const double bx = W - kRight - kBarSpace + 26, bw = 16, by1 = f.py1, by0 = f.py0;
-    o += "<defs><linearGradient id=\"" + id + "-bar\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
-    for (int k = 0; k <= 8; ++k)
-      o += "<stop offset=\"" + num(k / 8.0) + "\" stop-color=\"" + scale_colour(k / 8.0) + "\"/>";
-    o += "</linearGradient></defs>\n";
-    o += "<g class=\"colour-bar\"><rect x=\"" + num(bx) + "\" y=\"" + num(by1) + "\" width=\"" + num(bw) +
-         "\" height=\"" + num(by0 - by1) + "\" fill=\"url(#" + id + "-bar)\" stroke=\"#444\"/>";
-    const double lo = bar_lo_, hi = bar_hi_ > bar_lo_ ? bar_hi_ : bar_lo_ + 1;
-    const double step = nice_tick_step(lo, hi, 6);
-    for (double v : nice_ticks(lo, hi, 6)) {
-      const double y = by0 - (v - lo) / (hi - lo) * (by0 - by1);
-      o += "<line x1=\"" + num(bx + bw) + "\" y1=\"" + num(y) + "\" x2=\"" + num(bx + bw + 4) + "\" y2=\"" + num(y) +
-           "\" stroke=\"#444\"/><text x=\"" + num(bx + bw + 7) + "\" y=\"" + num(y + 4) + "\">" + format_tick(v, step) +
-           "</text>";
-    }
-    o += "<text class=\"axis\" x=\"" + num(bx + bw / 2) + "\" y=\"" + num(by1 - 10) + "\" text-anchor=\"middle\">" +
-         html_escape(bar_label_) + "</text></g>\n";
+void SvgChart::render_colour_bar(std::string& o, const Frame& f, const std::string& id) const {
+  const double W = options_.width;
+  // Gradient bar with its own ticks: the velocity colours of the coloured line.
+  const double bx = W - kRight - kBarSpace + 26, bw = 16, by1 = f.py1, by0 = f.py0;
+  o += "<defs><linearGradient id=\"" + id + "-bar\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
+  for (int k = 0; k <= 8; ++k)
+    o += "<stop offset=\"" + num(k / 8.0) + "\" stop-color=\"" + scale_colour(k / 8.0) + "\"/>";
+  o += "</linearGradient></defs>\n";
+  o += "<g class=\"colour-bar\"><rect x=\"" + num(bx) + "\" y=\"" + num(by1) + "\" width=\"" + num(bw) +
+       "\" height=\"" + num(by0 - by1) + "\" fill=\"url(#" + id + "-bar)\" stroke=\"#444\"/>";
+  const double lo = bar_lo_, hi = bar_hi_ > bar_lo_ ? bar_hi_ : bar_lo_ + 1;
+  const double step = nice_tick_step(lo, hi, 6);
+  for (double v : nice_ticks(lo, hi, 6)) {
+    const double y = by0 - (v - lo) / (hi - lo) * (by0 - by1);
+    o += "<line x1=\"" + num(bx + bw) + "\" y1=\"" + num(y) + "\" x2=\"" + num(bx + bw + 4) + "\" y2=\"" +
+         num(y) + "\" stroke=\"#444\"/><text x=\"" + num(bx + bw + 7) + "\" y=\"" + num(y + 4) + "\">" +
+         format_tick(v, step) + "</text>";
   }
+  o += "<text class=\"axis\" x=\"" + num(bx + bw / 2) + "\" y=\"" + num(by1 - 10) +
+       "\" text-anchor=\"middle\">" + html_escape(bar_label_) + "</text></g>\n";
+}
+
+std::string SvgChart::render() const {
+  const std::vector<LegendEntry> legend = legend_entries();
+  const std::vector<XY> legend_at = legend_positions(legend, options_.width);
+  const double top = kTop + (legend_at.empty() ? 0 : legend_at.back().y - 42);
+  const Frame f = plot_frame(top);
+
+  const std::string id = html_escape(options_.id);
+  std::string o;
+  render_head(o, f, id);
+  render_axes(o, f);
+  render_data(o, f, id);
+  render_callouts(o, f);
+  o += "<rect class=\"frame\" x=\"" + num(f.px0) + "\" y=\"" + num(f.py1) + "\" width=\"" +
+       num(f.px1 - f.px0) + "\" height=\"" + num(f.py0 - f.py1) + "\"/>\n";
+  render_legend(o, legend, legend_at);
+  if (colour_bar_) render_colour_bar(o, f, id);
   o += "</svg>\n";
   return o;
 }

@@ -74,7 +74,23 @@ class SvgChart {
   struct Bounds {
     double x0, x1, y0, y1;
   };
+  struct Frame;        // data-to-pixel mapping (svg_chart.cpp)
+  struct LegendEntry;  // a swatch and its text (svg_chart.cpp)
   Bounds data_bounds() const;
+
+  // render(), piece by piece in the order of the SVG.
+  std::vector<LegendEntry> legend_entries() const;
+  static std::vector<XY> legend_positions(const std::vector<LegendEntry>& legend, double width);
+  Frame plot_frame(double top) const;
+  void render_head(std::string& o, const Frame& f, const std::string& id) const;
+  void render_axes(std::string& o, const Frame& f) const;
+  void render_data(std::string& o, const Frame& f, const std::string& id) const;
+  static void render_coloured_line(std::string& o, const Frame& f, const ColouredLine& c);
+  void render_callouts(std::string& o, const Frame& f) const;
+  static void render_legend(std::string& o, const std::vector<LegendEntry>& legend,
+                            const std::vector<XY>& legend_at);
+  void render_colour_bar(std::string& o, const Frame& f, const std::string& id) const;
+  static std::vector<std::string> polylines(const Frame& f, const std::vector<XY>& pts);
 
   ChartOptions options_;
   bool view_ = false;
