@@ -397,79 +397,26 @@ void Planner::backward_pass(bool full) {
   }
 }
 
-void Planner::commit_front() {
-  WindowElement& w = *elements_.front();
-  const interp::PathElement& e = w.element;
-  note_block_start(e.source);
-  if (e.kind == interp::ElementKind::Positioning)
-    for (const auto& m : e.positioning) positioning_.start(m, block_start_s_);
-  BlockTiming timing;
-  timing.rapid = e.rapid;
-  timing.after_first_m0 = seen_m0_;
-
-  double v = front_velocity_;
-  Limit kind = front_kind_;
-  double v_min = v, v_max = v;
-  Limit v_min_kind = kind;
+// The forward pass's running values over the front element's segments (step 5).
+struct Planner::CommitTally {
+  double v;     // velocity at the current node
+  Limit kind;   // the limit that bound it
+  double v_min, v_max;
+  Limit v_min_kind;
   // Lowest velocity outside planned standstills (ramps into and out of exact stops).
   double cut_min = kInf;
   Limit cut_kind = Limit::Feed;
-  auto note_cut = [&](double vel, Limit k) {
+  double time = 0;
+  double length = 0;
+
+  void note_cut(double vel, Limit k) {
     if (k != Limit::ExactStop && vel < cut_min) {
       cut_min = vel;
       cut_kind = k;
     }
-  };
-  if (w.segment_count > 0) note_cut(v, kind);
-
-  double time = 0;
-  double length = 0;
-  for (size_t k = 0; k < w.segment_count; ++k) {
-    const Segment& seg = segments_[k];
-    const Node& next = nodes_[k + 1];
-    // A line segment whose end bound is reachable needs no reach (only arcs' envelopes use it).
-    const bool bound_reached = !seg.envelope && reaches(front_anchor_, v, seg, next.backward);
-    const double reach = bound_reached ? next.backward : extend(front_anchor_, v, seg);
-    const RampAnchor rise = front_anchor_;
-    double v1;
-    Limit k1;
-    if (next.backward <= reach) {
-      v1 = next.backward;
-      k1 = next.backward_kind;
-      front_anchor_ = {};
-    } else {
-      v1 = reach;
-      k1 = kind;
-    }
-    double duration, peak;
-    if (seg.envelope && v >= seg.cap && v1 >= seg.cap) {
-      duration = seg.length / seg.cap;  // cruise: no ramp in this segment
-      peak = seg.cap;
-      if (options_.emit_samples)
-        emit_samples(w, seg, duration, [&](double t) { return ProfileState{std::min(seg.cap * t, seg.length), seg.cap, 0, 0}; });
-    } else if (seg.envelope) {
-      RampAnchor fall = next.anchor;
-      const double fall_far = extend(fall, next.backward, seg);
-      const EnvelopeSegment profile = plan_envelope_segment(
-          seg.length, seg.cap, {rise.velocity, rise.distance - seg.length, rise.limits, v, reach, seg.grid},
-          {fall.velocity, fall.distance - seg.length, fall.limits, next.backward, fall_far, seg.grid});
-      duration = profile.duration;
-      peak = profile.peak;
-      if (options_.emit_samples && std::isfinite(duration))
-        emit_samples(w, seg, duration, [&](double t) { return evaluate(profile, t); });
-    } else {
-      const SegmentProfile profile = plan_segment(v, v1, seg.cap, seg.length, seg.ramp);
-      duration = profile.duration;
-      peak = profile.peak;
-      if (options_.emit_samples && std::isfinite(duration))
-        emit_samples(w, seg, duration, [&](double t) { return evaluate(profile, t); });
-    }
-    // A positive but absurdly small F would take forever: the control cannot move that slowly.
-    if (!std::isfinite(duration)) raise(14800, "feed too small to traverse the block", e);
-    clock_s_ += duration;
-    time += duration;
-    length += seg.length;
-    v_max = std::max(v_max, peak);
+  }
+  // Moves on to the segment's end node, reached at v1 bound by k1.
+  void advance(double v1, Limit k1) {
     if (v1 < v_min) {
       v_min = v1;
       v_min_kind = k1;
@@ -478,6 +425,22 @@ void Planner::commit_front() {
     v = v1;
     kind = k1;
   }
+};
+
+void Planner::commit_front() {
+  WindowElement& w = *elements_.front();
+  const interp::PathElement& e = w.element;
+  note_block_start(e.source);
+  if (e.kind == interp::ElementKind::Positioning)
+    for (const auto& m : e.positioning) positioning_.start(m, block_start_s_);
+
+  CommitTally tally{.v = front_velocity_,
+                    .kind = front_kind_,
+                    .v_min = front_velocity_,
+                    .v_max = front_velocity_,
+                    .v_min_kind = front_kind_};
+  if (w.segment_count > 0) tally.note_cut(tally.v, tally.kind);
+  for (size_t k = 0; k < w.segment_count; ++k) commit_segment(w, segments_[k], nodes_[k + 1], tally);
   if (w.segment_count > 0) {
     position_ = e.curve->end();
     position_known_ = true;
@@ -486,36 +449,92 @@ void Planner::commit_front() {
     nodes_.pop_front();
     segments_.pop_front();
   }
-  front_velocity_ = v;
-  front_kind_ = kind;
+  front_velocity_ = tally.v;
+  front_kind_ = tally.kind;
 
+  report_commit(w, tally);
+  retire_front(w);
+}
+
+// One segment of the front element: the velocity at its end node, then its timed profile.
+void Planner::commit_segment(const WindowElement& w, const Segment& seg, const Node& next,
+                             CommitTally& tally) {
+  const double v = tally.v;
+  // A line segment whose end bound is reachable needs no reach (only arcs' envelopes use it).
+  const bool bound_reached = !seg.envelope && reaches(front_anchor_, v, seg, next.backward);
+  const double reach = bound_reached ? next.backward : extend(front_anchor_, v, seg);
+  const RampAnchor rise = front_anchor_;
+  double v1;
+  Limit k1;
+  if (next.backward <= reach) {
+    v1 = next.backward;
+    k1 = next.backward_kind;
+    front_anchor_ = {};
+  } else {
+    v1 = reach;
+    k1 = tally.kind;
+  }
+  double peak;
+  const double duration = time_segment(w, seg, next, rise, v, reach, v1, peak);
+  // A positive but absurdly small F would take forever: the control cannot move that slowly.
+  if (!std::isfinite(duration)) raise(14800, "feed too small to traverse the block", w.element);
+  clock_s_ += duration;
+  tally.time += duration;
+  tally.length += seg.length;
+  tally.v_max = std::max(tally.v_max, peak);
+  tally.advance(v1, k1);
+}
+
+// The duration of a segment run from v to v1 (`rise`: the forward ramp's anchor, `reach`: where
+// it gets to) and its highest velocity in `peak`; emits the IPO samples if asked to.
+double Planner::time_segment(const WindowElement& w, const Segment& seg, const Node& next,
+                             const RampAnchor& rise, double v, double reach, double v1, double& peak) {
+  double duration;
+  if (seg.envelope && v >= seg.cap && v1 >= seg.cap) {
+    duration = seg.length / seg.cap;  // cruise: no ramp in this segment
+    peak = seg.cap;
+    if (options_.emit_samples)
+      emit_samples(w, seg, duration,
+                   [&](double t) { return ProfileState{std::min(seg.cap * t, seg.length), seg.cap, 0, 0}; });
+  } else if (seg.envelope) {
+    RampAnchor fall = next.anchor;
+    const double fall_far = extend(fall, next.backward, seg);
+    const EnvelopeSegment profile = plan_envelope_segment(
+        seg.length, seg.cap, {rise.velocity, rise.distance - seg.length, rise.limits, v, reach, seg.grid},
+        {fall.velocity, fall.distance - seg.length, fall.limits, next.backward, fall_far, seg.grid});
+    duration = profile.duration;
+    peak = profile.peak;
+    if (options_.emit_samples && std::isfinite(duration))
+      emit_samples(w, seg, duration, [&](double t) { return evaluate(profile, t); });
+  } else {
+    const SegmentProfile profile = plan_segment(v, v1, seg.cap, seg.length, seg.ramp);
+    duration = profile.duration;
+    peak = profile.peak;
+    if (options_.emit_samples && std::isfinite(duration))
+      emit_samples(w, seg, duration, [&](double t) { return evaluate(profile, t); });
+  }
+  return duration;
+}
+
+// The committed element's BlockTiming for the observer, and its share of the summary.
+void Planner::report_commit(WindowElement& w, CommitTally& tally) {
+  const interp::PathElement& e = w.element;
+  BlockTiming timing;
+  timing.rapid = e.rapid;
+  timing.after_first_m0 = seen_m0_;
   // Reported feeds are the ones the control displays: tool-centre velocity / feed_scale (the
   // contour feed where CFC/CFIN scaled the centre; the centre feed under CFTCP).
   const double to_contour = e.feed_scale > 0 ? 1.0 / e.feed_scale : 1.0;
-  v_max *= to_contour;
-  v_min *= to_contour;
-  if (cut_min < kInf) cut_min *= to_contour;
-  timing.time_s = time;
-  timing.length_mm = length;
-  timing.v_max_mm_s = v_max;
-  timing.v_min_mm_s = v_min;
-  timing.limit = v_min_kind;
+  tally.v_max *= to_contour;
+  tally.v_min *= to_contour;
+  if (tally.cut_min < kInf) tally.cut_min *= to_contour;
+  timing.time_s = tally.time;
+  timing.length_mm = tally.length;
+  timing.v_max_mm_s = tally.v_max;
+  timing.v_min_mm_s = tally.v_min;
+  timing.limit = tally.v_min_kind;
 
-  summary_.time_s += time;
-  if (seen_m0_) summary_.time_after_m0_s += time;
-  summary_.path_length_mm += length;
-  ++summary_.elements;
-  if (w.segment_count > 0 && !e.rapid) {
-    summary_.max_feed_mm_s = std::max(summary_.max_feed_mm_s, v_max);
-    // A block run from standstill to standstill (G60, G9, a plunge after G0) has no velocity
-    // outside its planned ramps but its top speed: that is the feed it cut at (not a dip).
-    const double cut_low = cut_min < kInf ? cut_min : v_max;
-    summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_low) : cut_low;
-    any_cutting_ = true;
-    if (cut_min < kInf) dips_.add(e.source, e.feed_mm_s * to_contour, cut_min, cut_kind);
-  } else if (w.segment_count > 0) {
-    dips_.interrupt();
-  }
+  add_to_summary(e, w.segment_count > 0, tally, to_contour);
   // The element leaves the window here: its source and label move into the timing uncopied.
   timing.source = std::move(w.element.source);
   timing.label = std::move(w.element.label);
@@ -523,7 +542,30 @@ void Planner::commit_front() {
   timing.compress_deviation_mm = w.element.compress_deviation_mm;
   timing.smoothing_deviation_mm = w.element.smoothing_deviation_mm;
   observer_.on_block(timing);
+}
 
+// Totals, the lowest and highest cutting feed and the feed dips (feeds already at the contour).
+void Planner::add_to_summary(const interp::PathElement& e, bool moved, const CommitTally& tally,
+                             double to_contour) {
+  summary_.time_s += tally.time;
+  if (seen_m0_) summary_.time_after_m0_s += tally.time;
+  summary_.path_length_mm += tally.length;
+  ++summary_.elements;
+  if (moved && !e.rapid) {
+    summary_.max_feed_mm_s = std::max(summary_.max_feed_mm_s, tally.v_max);
+    // A block run from standstill to standstill (G60, G9, a plunge after G0) has no velocity
+    // outside its planned ramps but its top speed: that is the feed it cut at (not a dip).
+    const double cut_low = tally.cut_min < kInf ? tally.cut_min : tally.v_max;
+    summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_low) : cut_low;
+    any_cutting_ = true;
+    if (tally.cut_min < kInf) dips_.add(e.source, e.feed_mm_s * to_contour, tally.cut_min, tally.cut_kind);
+  } else if (moved) {
+    dips_.interrupt();
+  }
+}
+
+// The committed element leaves the window (kept as a spare for reuse while there is room).
+void Planner::retire_front(WindowElement& w) {
   if (w.segment_count > 0) --motion_in_window_;
   if (last_motion_ == &w) last_motion_ = nullptr;
   if (spare_elements_.size() < kSpareElements) {

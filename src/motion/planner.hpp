@@ -187,7 +187,15 @@ class Planner : public interp::ElementSink {
   bool continues_block(const BlockRef& source) const;
   void note_block_start(const BlockRef& source);
   void backward_pass(bool full);
+  // Step 5, the commit of the front element, in its parts.
+  struct CommitTally;  // planner.cpp
   void commit_front();
+  void commit_segment(const WindowElement& w, const Segment& seg, const Node& next, CommitTally& tally);
+  double time_segment(const WindowElement& w, const Segment& seg, const Node& next, const RampAnchor& rise,
+                      double v, double reach, double v1, double& peak);
+  void report_commit(WindowElement& w, CommitTally& tally);
+  void add_to_summary(const interp::PathElement& e, bool moved, const CommitTally& tally, double to_contour);
+  void retire_front(WindowElement& w);
   void flush();
   void account_pause(const interp::PathElement& element, double duration);
   void emit_samples(const WindowElement& e, const Segment& seg, double duration,
