@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "parser/ascii_case.hpp"
 #include "parser/line_error.hpp"
@@ -88,6 +89,115 @@ double to_double(std::string_view text, uint32_t column) {
   return v;
 }
 
+inline uint32_t col(size_t pos) { return static_cast<uint32_t>(pos + 1); }
+
+inline void push(std::vector<Token>& out, std::string_view s, TokenKind k, size_t start, size_t len) {
+  out.push_back(Token{k, col(start), s.substr(start, len), 0.0});
+}
+
+// '&' acts like a space on SINUMERIK, and so do the non-printable characters (Fundamentals,
+// "Character set": "Non-printable special characters are treated like blanks").
+inline bool is_blank(char c) {
+  return c == ' ' || c == '&' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F;
+}
+
+// The number starting at i as a Number token; returns its end.
+inline size_t lex_number(std::string_view s, size_t i, std::vector<Token>& out) {
+  const size_t end = scan_number(s, i);
+  Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
+  t.number = to_double(t.text, t.column);
+  out.push_back(t);
+  return end;
+}
+
+// A name or an address word starting at i (a name-start character); returns its end.
+inline size_t lex_name(std::string_view s, size_t i, std::vector<Token>& out) {
+  const size_t n = s.size();
+  const size_t start = i;
+  if (s[i] == '$') ++i;  // system variables: $AA_IM, $P_TOOL
+  while (i < n && ((s[i] >= 'A' && s[i] <= 'Z') || s[i] == '_')) ++i;
+  const size_t letters_end = i;
+  while (i < n && is_digit(s[i])) ++i;
+  if (letters_end - start == 1 && i > letters_end) {
+    // The address rule (PGA "Identifiers": names of variables and programs begin with two
+    // letters or an underscore): one letter followed by a digit is an address word. It
+    // ends with its digits, so compact blocks read as the control reads them:
+    // "N10G1X10Y20" is N10 G1 X10 Y20, "S12M3" is S12 M3.
+    if (i < n && s[i] == '.') {  // "X12.345": the letter, then a decimal number
+      push(out, s, TokenKind::Name, start, 1);
+      return lex_number(s, letters_end, out);
+    }
+    push(out, s, TokenKind::Name, start, i - start);  // "X10", "G1", "R5", "L12", "X1" of X1=
+    return i;
+  }
+  while (i < n && is_name_char(s[i])) ++i;
+  // A program name may carry its extension: EKVI_POSTUPNE_45.SPF
+  if (i + 4 <= n && s[i] == '.' && (s.substr(i + 1, 3) == "SPF" || s.substr(i + 1, 3) == "MPF") &&
+      (i + 4 == n || !is_name_char(s[i + 4])))
+    i += 4;
+  push(out, s, TokenKind::Name, start, i - start);
+  return i;
+}
+
+// A string starting at the '"' at i; returns the position after its closing '"'.
+inline size_t lex_string(std::string_view line, size_t i, std::vector<Token>& out) {
+  const size_t close = line.find('"', i + 1);
+  if (close == std::string_view::npos) throw LineError(12080, col(i), "unterminated string (missing \")");
+  // Strings keep their case: take them from the original line.
+  out.push_back(Token{TokenKind::String, col(i), line.substr(i + 1, close - i - 1), 0.0});
+  return close + 1;
+}
+
+// 'H1F' hexadecimal, 'B101' binary constants, starting at the quote at i; returns their end.
+inline size_t lex_based_constant(std::string_view s, size_t i, std::vector<Token>& out) {
+  const size_t close = s.find('\'', i + 1);
+  if (close == std::string_view::npos || close < i + 3)
+    throw LineError(12080, col(i), "unterminated or empty constant (missing ')");
+  const int base = s[i + 1] == 'H' ? 16 : s[i + 1] == 'B' ? 2 : 0;
+  uint64_t v = 0;
+  const char* first = s.data() + i + 2;
+  const char* last = s.data() + close;
+  const auto r = base ? std::from_chars(first, last, v, base)
+                      : std::from_chars_result{first, std::errc::invalid_argument};
+  if (r.ec != std::errc() || r.ptr != last)
+    throw LineError(12080, col(i), "malformed 'H..' or 'B..' constant");
+  Token t{TokenKind::Number, col(i), s.substr(i, close + 1 - i), static_cast<double>(v)};
+  out.push_back(t);
+  return close + 1;
+}
+
+// An operator or a bracket at i: its kind and length (one or two characters). Anything else
+// cannot start a token.
+inline std::pair<TokenKind, size_t> operator_at(std::string_view s, size_t i) {
+  const char c = s[i];
+  const char next = i + 1 < s.size() ? s[i + 1] : '\0';
+  switch (c) {
+    case '(': return {TokenKind::LParen, 1};
+    case ')': return {TokenKind::RParen, 1};
+    case '[': return {TokenKind::LBracket, 1};
+    case ']': return {TokenKind::RBracket, 1};
+    case ',': return {TokenKind::Comma, 1};
+    case '+': return {TokenKind::Plus, 1};
+    case '-': return {TokenKind::Minus, 1};
+    case '*': return {TokenKind::Star, 1};
+    case '/': return {TokenKind::Slash, 1};
+    case ':': return {TokenKind::Colon, 1};
+    case '=':
+      if (next == '=') return {TokenKind::Equal, 2};
+      return {TokenKind::Assign, 1};
+    case '<':
+      if (next == '>') return {TokenKind::NotEqual, 2};
+      if (next == '=') return {TokenKind::LessEqual, 2};
+      if (next == '<') return {TokenKind::Concat, 2};
+      return {TokenKind::Less, 1};
+    case '>':
+      if (next == '=') return {TokenKind::GreaterEqual, 2};
+      return {TokenKind::Greater, 1};
+    default:
+      throw LineError(12080, col(i), describe_char(c));
+  }
+}
+
 }  // namespace
 
 void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
@@ -97,129 +207,26 @@ void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
   const std::string_view s = upper_;
   const size_t n = s.size();
   size_t i = 0;
-  auto col = [](size_t pos) { return static_cast<uint32_t>(pos + 1); };
-  auto push = [&](TokenKind k, size_t start, size_t len) {
-    out.push_back(Token{k, col(start), s.substr(start, len), 0.0});
-  };
   while (i < n) {
     const char c = s[i];
-    // '&' acts like a space on SINUMERIK, and so do the non-printable characters (Fundamentals,
-    // "Character set": "Non-printable special characters are treated like blanks").
-    if (c == ' ' || c == '&' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+    if (is_blank(c)) {
       ++i;
       continue;
     }
     if (c == ';') break;  // comment to end of line
-    if (is_name_start(c)) {
-      const size_t start = i;
-      if (s[i] == '$') ++i;  // system variables: $AA_IM, $P_TOOL
-      while (i < n && ((s[i] >= 'A' && s[i] <= 'Z') || s[i] == '_')) ++i;
-      const size_t letters_end = i;
-      while (i < n && is_digit(s[i])) ++i;
-      if (letters_end - start == 1 && i > letters_end) {
-        // The address rule (PGA "Identifiers": names of variables and programs begin with two
-        // letters or an underscore): one letter followed by a digit is an address word. It
-        // ends with its digits, so compact blocks read as the control reads them:
-        // "N10G1X10Y20" is N10 G1 X10 Y20, "S12M3" is S12 M3.
-        if (i < n && s[i] == '.') {  // "X12.345": the letter, then a decimal number
-          push(TokenKind::Name, start, 1);
-          const size_t num_end = scan_number(s, letters_end);
-          Token t{TokenKind::Number, col(letters_end), s.substr(letters_end, num_end - letters_end), 0.0};
-          t.number = to_double(t.text, t.column);
-          out.push_back(t);
-          i = num_end;
-          continue;
-        }
-        push(TokenKind::Name, start, i - start);  // "X10", "G1", "R5", "L12", "X1" of X1=
-        continue;
-      }
-      while (i < n && is_name_char(s[i])) ++i;
-      // A program name may carry its extension: EKVI_POSTUPNE_45.SPF
-      if (i + 4 <= n && s[i] == '.' && (s.substr(i + 1, 3) == "SPF" || s.substr(i + 1, 3) == "MPF") &&
-          (i + 4 == n || !is_name_char(s[i + 4])))
-        i += 4;
-      push(TokenKind::Name, start, i - start);
-      continue;
-    }
-    if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(s[i + 1]))) {
-      const size_t end = scan_number(s, i);
-      Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
-      t.number = to_double(t.text, t.column);
-      out.push_back(t);
-      i = end;  // a name may follow directly: "X.5Y2" is X.5 Y2
-      continue;
-    }
-    switch (c) {
-      case '"': {
-        const size_t close = line.find('"', i + 1);
-        if (close == std::string_view::npos)
-          throw LineError(12080, col(i), "unterminated string (missing \")");
-        // Strings keep their case: take them from the original line.
-        out.push_back(Token{TokenKind::String, col(i), line.substr(i + 1, close - i - 1), 0.0});
-        i = close + 1;
-        continue;
-      }
-      case '\'': {  // 'H1F' hexadecimal, 'B101' binary constants
-        const size_t close = s.find('\'', i + 1);
-        if (close == std::string_view::npos || close < i + 3)
-          throw LineError(12080, col(i), "unterminated or empty constant (missing ')");
-        const int base = s[i + 1] == 'H' ? 16 : s[i + 1] == 'B' ? 2 : 0;
-        uint64_t v = 0;
-        const char* first = s.data() + i + 2;
-        const char* last = s.data() + close;
-        const auto r = base ? std::from_chars(first, last, v, base) : std::from_chars_result{first, std::errc::invalid_argument};
-        if (r.ec != std::errc() || r.ptr != last)
-          throw LineError(12080, col(i), "malformed 'H..' or 'B..' constant");
-        Token t{TokenKind::Number, col(i), s.substr(i, close + 1 - i), static_cast<double>(v)};
-        out.push_back(t);
-        i = close + 1;
-        continue;
-      }
-      case '(': push(TokenKind::LParen, i, 1); ++i; continue;
-      case ')': push(TokenKind::RParen, i, 1); ++i; continue;
-      case '[': push(TokenKind::LBracket, i, 1); ++i; continue;
-      case ']': push(TokenKind::RBracket, i, 1); ++i; continue;
-      case ',': push(TokenKind::Comma, i, 1); ++i; continue;
-      case '+': push(TokenKind::Plus, i, 1); ++i; continue;
-      case '-': push(TokenKind::Minus, i, 1); ++i; continue;
-      case '*': push(TokenKind::Star, i, 1); ++i; continue;
-      case '/': push(TokenKind::Slash, i, 1); ++i; continue;
-      case ':': push(TokenKind::Colon, i, 1); ++i; continue;
-      case '=':
-        if (i + 1 < n && s[i + 1] == '=') {
-          push(TokenKind::Equal, i, 2);
-          i += 2;
-        } else {
-          push(TokenKind::Assign, i, 1);
-          ++i;
-        }
-        continue;
-      case '<':
-        if (i + 1 < n && s[i + 1] == '>') {
-          push(TokenKind::NotEqual, i, 2);
-          i += 2;
-        } else if (i + 1 < n && s[i + 1] == '=') {
-          push(TokenKind::LessEqual, i, 2);
-          i += 2;
-        } else if (i + 1 < n && s[i + 1] == '<') {
-          push(TokenKind::Concat, i, 2);
-          i += 2;
-        } else {
-          push(TokenKind::Less, i, 1);
-          ++i;
-        }
-        continue;
-      case '>':
-        if (i + 1 < n && s[i + 1] == '=') {
-          push(TokenKind::GreaterEqual, i, 2);
-          i += 2;
-        } else {
-          push(TokenKind::Greater, i, 1);
-          ++i;
-        }
-        continue;
-      default:
-        throw LineError(12080, col(i), describe_char(c));
+    if (is_name_start(c))
+      i = lex_name(s, i, out);
+    else if (is_digit(c) || (c == '.' && i + 1 < n && is_digit(s[i + 1])))
+      i = lex_number(s, i, out);  // a name may follow directly: "X.5Y2" is X.5 Y2
+    else if (c == '"')
+      i = lex_string(line, i, out);
+    else if (c == '\'')
+      i = lex_based_constant(s, i, out);
+    else {
+      // operator_at only classifies: with a push per operator case GCC no longer inlined push().
+      const auto [kind, length] = operator_at(s, i);
+      push(out, s, kind, i, length);
+      i += length;
     }
   }
   out.push_back(Token{TokenKind::End, col(i), std::string_view(), 0.0});
