@@ -39,15 +39,16 @@ std::vector<double> unwrap(const std::vector<Vec3>& points, const ReferenceConto
   return u;
 }
 
-}  // namespace
-
-ContourSplit split_contour(const SampledProgram& program, const ReferenceContour& reference, double capture_mm) {
-  ContourSplit split;
-  std::set<BlockKey> contour_blocks;
+// The samples of the contour's elements (feed moves with both ends within `capture_mm` of the
+// curve); counts them, notes their blocks and the largest compensation radius in `split`.
+std::vector<Vec3> contour_samples(const SampledProgram& program, const ReferenceContour& reference,
+                                  double capture_mm, ContourSplit& split,
+                                  std::set<BlockKey>& contour_blocks) {
   std::vector<Vec3> programmed;
   for (const SampledElement& e : program.programmed) {
     if (e.rapid) continue;
-    if (reference.nearest(xy(e.start())).distance > capture_mm || reference.nearest(xy(e.end())).distance > capture_mm)
+    if (reference.nearest(xy(e.start())).distance > capture_mm ||
+        reference.nearest(xy(e.end())).distance > capture_mm)
       continue;
     ++split.contour_elements;
     contour_blocks.insert(key_of(e));
@@ -55,19 +56,13 @@ ContourSplit split_contour(const SampledProgram& program, const ReferenceContour
       split.tool_radius_mm = std::max(split.tool_radius_mm, e.compensation.radius_mm);
     append_samples(programmed, e);
   }
-  if (programmed.empty()) {
-    split.bottom_loop = 0;
-    return split;
-  }
-  std::vector<Vec3> tool;
-  if (split.tool_radius_mm > 0)
-    for (const SampledElement& e : program.tool_centre)
-      if (contour_blocks.count(key_of(e))) append_samples(tool, e);
+  return programmed;
+}
 
-  // Pass index: whole turns from the first sample; a sample exactly on the seam goes with the
-  // pass that follows (the small bias), and slivers of a few samples are merged below.
-  const std::vector<double> u = unwrap(programmed, reference, 0.5);
-  const double direction = u.back() >= u.front() ? 1.0 : -1.0;
+// Pass index: whole turns from the first sample; a sample exactly on the seam goes with the
+// pass that follows (the small bias), and slivers of a few samples are merged below.
+std::vector<ContourPass> passes_by_turn(const std::vector<Vec3>& programmed, const std::vector<double>& u,
+                                        double direction) {
   auto turn = [&](double value) { return std::floor(direction * value + 1e-4); };
   const double first_turn = turn(u.front());
   std::vector<ContourPass> passes;
@@ -84,33 +79,46 @@ ContourSplit split_contour(const SampledProgram& program, const ReferenceContour
     p.u_low = std::min(p.u_low, u[i]);
     p.u_high = std::max(p.u_high, u[i]);
   }
-  // Merge slivers (a sample or two on the seam) into a neighbour.
+  return passes;
+}
+
+// Merge slivers (a sample or two on the seam) into a neighbour.
+void merge_slivers(std::vector<ContourPass>& passes) {
   for (size_t i = 0; i < passes.size() && passes.size() > 1;) {
     if (passes[i].u_high - passes[i].u_low >= 2e-3) {
       ++i;
       continue;
     }
     ContourPass& into = i > 0 ? passes[i - 1] : passes[i + 1];
-    if (i > 0) into.programmed.insert(into.programmed.end(), passes[i].programmed.begin(), passes[i].programmed.end());
-    else into.programmed.insert(into.programmed.begin(), passes[i].programmed.begin(), passes[i].programmed.end());
+    const std::vector<Vec3>& sliver = passes[i].programmed;
+    if (i > 0) into.programmed.insert(into.programmed.end(), sliver.begin(), sliver.end());
+    else into.programmed.insert(into.programmed.begin(), sliver.begin(), sliver.end());
     into.u_low = std::min(into.u_low, passes[i].u_low);
     into.u_high = std::max(into.u_high, passes[i].u_high);
     passes.erase(passes.begin() + static_cast<std::ptrdiff_t>(i));
   }
+}
 
-  // Tool-centre samples follow the passes in travel order.
-  if (!tool.empty()) {
-    const std::vector<double> tu = unwrap(tool, reference, u.front());
-    size_t p = 0;
-    for (size_t i = 0; i < tool.size(); ++i) {
-      while (p + 1 < passes.size() &&
-             (direction > 0 ? tu[i] > passes[p].u_high + 1e-4 : tu[i] < passes[p].u_low - 1e-4))
-        ++p;
-      passes[p].tool_centre.push_back(tool[i]);
-    }
+// Tool-centre samples (unwrapped fractions `tu`) follow the passes in travel order.
+void assign_tool_centre(std::vector<ContourPass>& passes, const std::vector<Vec3>& tool,
+                        const std::vector<double>& tu, double direction) {
+  size_t p = 0;
+  for (size_t i = 0; i < tool.size(); ++i) {
+    while (p + 1 < passes.size() &&
+           (direction > 0 ? tu[i] > passes[p].u_high + 1e-4 : tu[i] < passes[p].u_low - 1e-4))
+      ++p;
+    passes[p].tool_centre.push_back(tool[i]);
   }
+}
 
-  size_t first_full = passes.size(), last_full = passes.size(), loops = 0;
+// The first and the last full loop; passes.size() for both when there is none.
+struct FullLoops {
+  size_t first, last;
+};
+
+// Marks the full loops and gives each pass its mean Z.
+FullLoops measure_passes(std::vector<ContourPass>& passes) {
+  FullLoops full{passes.size(), passes.size()};
   for (size_t i = 0; i < passes.size(); ++i) {
     ContourPass& p = passes[i];
     p.full_loop = p.u_high - p.u_low >= 0.99;
@@ -118,23 +126,63 @@ ContourSplit split_contour(const SampledProgram& program, const ReferenceContour
     for (const Vec3& q : p.programmed) z += q.z();
     p.mean_z_mm = z / static_cast<double>(p.programmed.size());
     if (p.full_loop) {
-      if (first_full == passes.size()) first_full = i;
-      last_full = i;
+      if (full.first == passes.size()) full.first = i;
+      full.last = i;
     }
   }
-  size_t partial = 0;
-  split.bottom_loop = 0;
+  return full;
+}
+
+// "loop 1", "loop 2", ...; partial passes are "entry" before the first loop, "exit" after the
+// last and "part" between loops, or "part 1", "part 2", ... when there is no loop.
+void name_passes(std::vector<ContourPass>& passes, FullLoops full) {
+  size_t loops = 0, partial = 0;
   for (size_t i = 0; i < passes.size(); ++i) {
     ContourPass& p = passes[i];
     if (p.full_loop) p.name = "loop " + std::to_string(++loops);
-    else if (first_full == passes.size()) p.name = "part " + std::to_string(++partial);
-    else p.name = i < first_full ? "entry" : i > last_full ? "exit" : "part";
-    const ContourPass& best = passes[split.bottom_loop];
-    const bool better = first_full == passes.size()
+    else if (full.first == passes.size()) p.name = "part " + std::to_string(++partial);
+    else p.name = i < full.first ? "entry" : i > full.last ? "exit" : "part";
+  }
+}
+
+// The full loop at the lowest Z; the longest pass when no pass is a full loop.
+size_t bottom_loop(const std::vector<ContourPass>& passes, FullLoops full) {
+  size_t bottom = 0;
+  for (size_t i = 0; i < passes.size(); ++i) {
+    const ContourPass& p = passes[i];
+    const ContourPass& best = passes[bottom];
+    const bool better = full.first == passes.size()
                             ? p.u_high - p.u_low > best.u_high - best.u_low
                             : p.full_loop && (!best.full_loop || p.mean_z_mm < best.mean_z_mm - 1e-6);
-    if (better) split.bottom_loop = i;
+    if (better) bottom = i;
   }
+  return bottom;
+}
+
+}  // namespace
+
+ContourSplit split_contour(const SampledProgram& program, const ReferenceContour& reference, double capture_mm) {
+  ContourSplit split;
+  std::set<BlockKey> contour_blocks;
+  const std::vector<Vec3> programmed = contour_samples(program, reference, capture_mm, split, contour_blocks);
+  if (programmed.empty()) {
+    split.bottom_loop = 0;
+    return split;
+  }
+  std::vector<Vec3> tool;
+  if (split.tool_radius_mm > 0)
+    for (const SampledElement& e : program.tool_centre)
+      if (contour_blocks.count(key_of(e))) append_samples(tool, e);
+
+  const std::vector<double> u = unwrap(programmed, reference, 0.5);
+  const double direction = u.back() >= u.front() ? 1.0 : -1.0;
+  std::vector<ContourPass> passes = passes_by_turn(programmed, u, direction);
+  merge_slivers(passes);
+  if (!tool.empty()) assign_tool_centre(passes, tool, unwrap(tool, reference, u.front()), direction);
+
+  const FullLoops full = measure_passes(passes);
+  name_passes(passes, full);
+  split.bottom_loop = bottom_loop(passes, full);
   split.passes = std::move(passes);
   return split;
 }
