@@ -28,6 +28,10 @@
 #include "machine/machine_profile.hpp"
 #include "parser/block.hpp"
 
+namespace drycut::geometry {
+struct ArcResult;
+}
+
 namespace drycut::interp {
 
 // A block's POS/POSA of geometry axes: none, alone (a positioning move) or beside path axes.
@@ -131,6 +135,13 @@ class Interpreter {
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
   PathElement build_arc(BlockContext& ctx, const Target& target);
+  // build_arc's parts (interpreter_curves.cpp): the circle of CIP, CT and G2/G3 in its system.
+  struct ArcSpace;
+  geometry::ArcResult cip_arc(const BlockContext& ctx, const ArcSpace& space) const;
+  geometry::ArcResult ct_arc(const BlockContext& ctx, const ArcSpace& space) const;
+  geometry::ArcResult g2_g3_arc(const BlockContext& ctx, const ArcSpace& space) const;
+  int arc_turns(const BlockContext& ctx) const;
+  bool arc_centre(const BlockContext& ctx, const ArcSpace& space, Eigen::Vector3d& center) const;
   PathElement build_polynomial(BlockContext& ctx, const Eigen::Vector3d& target);  // POLY (interpreter_polynomial.cpp)
   void add_spline_point(BlockContext& ctx, const Eigen::Vector3d& target);
   void end_spline_run(const Eigen::Vector3d* next_direction);

@@ -23,6 +23,16 @@ PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   return e;
 }
 
+// The system build_arc builds a circle in, and the circle's ends there.
+struct Interpreter::ArcSpace {
+  const Frame& frame;
+  bool in_machine;  // the machine system shifted (the frame is a pure translation)
+  Vector3d shift;   // added to absolute centres and CIP points
+  Vector3d start, end;
+  geometry::Plane plane;
+  double unit;  // mm per programmed length unit
+};
+
 PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
   const double unit = state_.inch ? kMmPerInch : 1.0;
   // The circle is built where the program describes it. With a pure translation that is the
@@ -30,81 +40,25 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
   // finished circle goes through the frame (a mirror turns G2 into G3 by itself).
   const Frame& frame = block_frame(ctx);
   const bool in_machine = frame.is_pure_translation();
-  // Absolute centres and CIP points are tip positions: in the machine system they get the length.
-  const Vector3d shift = in_machine ? Vector3d(frame.offset() + target.length_after) : Vector3d::Zero();
-  const Vector3d start = in_machine ? position_ : frame.to_inner(position_ - target.length_before);
-  const Vector3d end = in_machine ? target.machine : target.workpiece;
-  const geometry::Plane plane = to_geometry_plane(state_.plane);
-  geometry::ArcTolerance tolerance{profile_.circle_error_const_mm, profile_.circle_error_factor};
-  geometry::ArcResult result;
+  const ArcSpace space{
+      .frame = frame,
+      .in_machine = in_machine,
+      // Absolute centres and CIP points are tip positions: in the machine system they get the length.
+      .shift = in_machine ? Vector3d(frame.offset() + target.length_after) : Vector3d::Zero(),
+      .start = in_machine ? position_ : frame.to_inner(position_ - target.length_before),
+      .end = in_machine ? target.machine : target.workpiece,
+      .plane = to_geometry_plane(state_.plane),
+      .unit = unit};
   PathElement e = element_template(ctx, ElementKind::Arc);
   e.label = std::string(motion_mode_name(state_.motion));
 
-  if (state_.motion == MotionMode::ArcThroughPoint) {
-    // CIP: intermediate point I1/J1/K1 follows G90/G91 (and AC/IC) like an end point.
-    Vector3d mid = start;
-    bool any = false;
-    const char* names[3] = {"I1", "J1", "K1"};
-    for (int i = 0; i < 3; ++i) {
-      if (const AddressWord* a = ctx.block.find_address(names[i])) {
-        any = true;
-        const bool incremental = is_incremental(*a);
-        const double value = a->value * unit * state_.diameter.value_factor(i, a->mode, incremental);
-        mid[i] = incremental ? start[i] + value : value + shift[i];
-      }
-    }
-    if (!any) raise(ctx, 14040, "CIP needs an intermediate point I1/J1/K1");
-    result = geometry::arc_through_point(start, mid, end);
-  } else if (state_.motion == MotionMode::ArcTangent) {
-    if (!has_last_tangent_) raise(ctx, 14040, "CT needs a preceding motion to be tangent to");
-    const Vector3d tangent = in_machine ? last_tangent_ : frame.vector_to_inner(last_tangent_).normalized();
-    result = geometry::arc_tangent(start, tangent, end, plane);
-  } else {
-    const bool cw = state_.motion == MotionMode::ArcCw;
-    const AddressWord* cr = ctx.block.find_address("CR");
-    const AddressWord* ar = ctx.block.find_address("AR");
-    const AddressWord* turn = ctx.block.find_address("TURN");
-    int turns = 0;
-    if (turn) {
-      if (turn->value < 0 || turn->value > kMaxTurns || turn->value != std::floor(turn->value))
-        raise(ctx, 14048, "TURN=" + std::to_string(turn->value), turn->column);
-      turns = static_cast<int>(turn->value);
-    }
-    bool has_center = false;
-    Vector3d center = start;
-    const char* names[3] = {"I", "J", "K"};
-    for (int i = 0; i < 3; ++i) {
-      if (const AddressWord* a = ctx.block.find_address(names[i])) {
-        has_center = true;
-        // I/J/K are relative to the start point unless written I=AC(..). Under diameter
-        // programming an absolute centre is a diameter, a relative one a radius (P1).
-        center[i] = a->mode == ValueMode::Absolute
-                        ? a->value * unit * state_.diameter.position_factor(i, false) + shift[i]
-                        : start[i] + a->value * unit;
-      }
-    }
-    if (!has_center && polar_words(ctx).any()) {
-      // G2/G3 AP= RP=: a circle about the pole (in the plane; the normal coordinate is the start's).
-      const PlaneIndices axes = state_.plane_indices();
-      has_center = true;
-      center[axes.first] = state_.polar.pole()[axes.first] + shift[axes.first];
-      center[axes.second] = state_.polar.pole()[axes.second] + shift[axes.second];
-    }
-    if (cr) {
-      if (cr->value == 0) raise(ctx, 14040, "CR=0", cr->column);
-      if (!(std::abs(cr->value) <= kMaxAddressValue)) raise(ctx, 12160, "CR outside the control's value range", cr->column);
-      result = geometry::arc_from_radius(start, end, cr->value * unit, cw, plane, {}, turns);
-    } else if (ar && has_center) {
-      result = geometry::arc_from_angle_and_center(start, end, center, ar->value * std::numbers::pi / 180.0, cw, plane,
-                                                   turns);
-    } else if (ar) {
-      result = geometry::arc_from_angle_and_end(start, end, ar->value * std::numbers::pi / 180.0, cw, plane, turns);
-    } else if (has_center) {
-      result = geometry::arc_from_center(start, end, center, cw, plane, turns, tolerance);
-    } else {
-      raise(ctx, 14040, "G2/G3 needs a centre (I/J/K), a radius (CR=) or an angle (AR=)");
-    }
-  }
+  geometry::ArcResult result;
+  if (state_.motion == MotionMode::ArcThroughPoint)
+    result = cip_arc(ctx, space);
+  else if (state_.motion == MotionMode::ArcTangent)
+    result = ct_arc(ctx, space);
+  else
+    result = g2_g3_arc(ctx, space);
   if (result.alarm != 0) raise(ctx, result.alarm, result.detail);
   if (!(std::isfinite(result.curve->length()) && result.curve->end().allFinite()))
     raise(ctx, 14040, "the circle cannot be computed (radius or angle out of range)");
@@ -118,6 +72,92 @@ PathElement Interpreter::build_arc(BlockContext& ctx, const Target& target) {
   }
   e.feed_mm_s = feed_mm_s(ctx, e.path_length(), target.machine - position_);
   return e;
+}
+
+geometry::ArcResult Interpreter::cip_arc(const BlockContext& ctx, const ArcSpace& space) const {
+  // CIP: intermediate point I1/J1/K1 follows G90/G91 (and AC/IC) like an end point.
+  Vector3d mid = space.start;
+  bool any = false;
+  const char* names[3] = {"I1", "J1", "K1"};
+  for (int i = 0; i < 3; ++i) {
+    if (const AddressWord* a = ctx.block.find_address(names[i])) {
+      any = true;
+      const bool incremental = is_incremental(*a);
+      const double value = a->value * space.unit * state_.diameter.value_factor(i, a->mode, incremental);
+      mid[i] = incremental ? space.start[i] + value : value + space.shift[i];
+    }
+  }
+  if (!any) raise(ctx, 14040, "CIP needs an intermediate point I1/J1/K1");
+  return geometry::arc_through_point(space.start, mid, space.end);
+}
+
+geometry::ArcResult Interpreter::ct_arc(const BlockContext& ctx, const ArcSpace& space) const {
+  if (!has_last_tangent_) raise(ctx, 14040, "CT needs a preceding motion to be tangent to");
+  const Vector3d tangent =
+      space.in_machine ? last_tangent_ : space.frame.vector_to_inner(last_tangent_).normalized();
+  return geometry::arc_tangent(space.start, tangent, space.end, space.plane);
+}
+
+// G2/G3 by centre, radius (CR=) or angle (AR=), with TURN= extra revolutions.
+geometry::ArcResult Interpreter::g2_g3_arc(const BlockContext& ctx, const ArcSpace& space) const {
+  const bool cw = state_.motion == MotionMode::ArcCw;
+  const AddressWord* cr = ctx.block.find_address("CR");
+  const AddressWord* ar = ctx.block.find_address("AR");
+  const int turns = arc_turns(ctx);
+  Vector3d center = space.start;
+  const bool has_center = arc_centre(ctx, space, center);
+  const Vector3d& start = space.start;
+  const Vector3d& end = space.end;
+  const geometry::Plane plane = space.plane;
+  if (cr) {
+    if (cr->value == 0) raise(ctx, 14040, "CR=0", cr->column);
+    if (!(std::abs(cr->value) <= kMaxAddressValue))
+      raise(ctx, 12160, "CR outside the control's value range", cr->column);
+    return geometry::arc_from_radius(start, end, cr->value * space.unit, cw, plane, {}, turns);
+  }
+  const double ar_rad = ar ? ar->value * std::numbers::pi / 180.0 : 0.0;
+  if (ar && has_center)
+    return geometry::arc_from_angle_and_center(start, end, center, ar_rad, cw, plane, turns);
+  if (ar) return geometry::arc_from_angle_and_end(start, end, ar_rad, cw, plane, turns);
+  if (has_center) {
+    const geometry::ArcTolerance tolerance{profile_.circle_error_const_mm, profile_.circle_error_factor};
+    return geometry::arc_from_center(start, end, center, cw, plane, turns, tolerance);
+  }
+  raise(ctx, 14040, "G2/G3 needs a centre (I/J/K), a radius (CR=) or an angle (AR=)");
+}
+
+// TURN=: the full revolutions a G2/G3 circle makes besides its arc (0 without TURN).
+int Interpreter::arc_turns(const BlockContext& ctx) const {
+  const AddressWord* turn = ctx.block.find_address("TURN");
+  if (!turn) return 0;
+  if (turn->value < 0 || turn->value > kMaxTurns || turn->value != std::floor(turn->value))
+    raise(ctx, 14048, "TURN=" + std::to_string(turn->value), turn->column);
+  return static_cast<int>(turn->value);
+}
+
+// The centre of a G2/G3 circle from I/J/K or, without them, the pole of AP=/RP= into `center`;
+// false when the block gives neither.
+bool Interpreter::arc_centre(const BlockContext& ctx, const ArcSpace& space, Vector3d& center) const {
+  bool has_center = false;
+  const char* names[3] = {"I", "J", "K"};
+  for (int i = 0; i < 3; ++i) {
+    if (const AddressWord* a = ctx.block.find_address(names[i])) {
+      has_center = true;
+      // I/J/K are relative to the start point unless written I=AC(..). Under diameter
+      // programming an absolute centre is a diameter, a relative one a radius (P1).
+      center[i] = a->mode == ValueMode::Absolute
+                      ? a->value * space.unit * state_.diameter.position_factor(i, false) + space.shift[i]
+                      : space.start[i] + a->value * space.unit;
+    }
+  }
+  if (!has_center && polar_words(ctx).any()) {
+    // G2/G3 AP= RP=: a circle about the pole (in the plane; the normal coordinate is the start's).
+    const PlaneIndices axes = state_.plane_indices();
+    has_center = true;
+    center[axes.first] = state_.polar.pole()[axes.first] + space.shift[axes.first];
+    center[axes.second] = state_.polar.pole()[axes.second] + space.shift[axes.second];
+  }
+  return has_center;
 }
 
 void Interpreter::add_spline_point(BlockContext& ctx, const Vector3d& target) {
