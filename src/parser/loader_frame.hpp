@@ -56,6 +56,12 @@ class ProgramLoader::Scope : public VariableSource {
 
  private:
   Value circle_data(const ExprNode& call, const ExprPool& pool) const;
+  // The environment functions that need the loader (loader_scope.cpp).
+  Value isvar_value(const ExprNode& call, std::span<const Value> args) const;
+  Value isfile_value(const ExprNode& call, std::span<const Value> args) const;
+  Value stringis_value(const ExprNode& call, std::span<const Value> args) const;
+  Value nametoint_value(const ExprNode& call, std::span<const Value> args) const;
+  Value gett_value(const ExprNode& call, std::span<const Value> args) const;
   ProgramLoader& loader_;
 };
 

@@ -34,6 +34,35 @@ size_t character_position(const std::string& text, const Value& index, uint32_t 
   return static_cast<size_t>(i);
 }
 
+// SPI(n) (Job Planning, "SPI"): the axis name of spindle n; drycut names spindles SP<n>.
+Value spi_value(const ExprNode& call, std::span<const Value> args) {
+  if (args.empty() || !args[0].is_number() || args[0].number < 1 ||
+      args[0].number != std::trunc(args[0].number))
+    throw LineError(12150, call.column, "SPI needs a spindle number 1, 2 ...");
+  return Value::of_axis("SP" + std::to_string(static_cast<int64_t>(args[0].number)));
+}
+
+// A frame function: the FRAME value carries its own text, "CTRANS(X,10,Y,5)", which the
+// interpreter computes where the frame is written ($P_UIFR, $P_PFRAME; frame_components.hpp).
+Value frame_function_value(const ExprNode& call, std::span<const Value> args) {
+  std::string text(call.text);
+  text += '(';
+  char buf[32];
+  for (size_t k = 0; k < args.size(); ++k) {
+    if (k > 0) text += ',';
+    if (args[k].is_number()) {
+      std::snprintf(buf, sizeof buf, "%.17g", args[k].number);
+      text += buf;
+    } else {
+      text += args[k].text;
+    }
+  }
+  text += ')';
+  Value v = Value::of_frame();
+  v.text = std::move(text);
+  return v;
+}
+
 }  // namespace
 
 Variable* ProgramLoader::find_variable(std::string_view name) {
@@ -132,86 +161,79 @@ double ProgramLoader::Scope::r_parameter(double index, uint32_t column) const {
 }
 
 Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span<const Value> args) const {
-  ProgramLoader& l = loader_;
   switch (call.func) {
-    case Function::IsVar: {
-      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "ISVAR needs a name as a string");
-      std::string name = args[0].text;
-      for (char& c : name)
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-      if (const size_t b = name.find('['); b != std::string::npos) name.resize(b);
-      const bool known = l.find_variable(name) != nullptr ||
-                         (!name.empty() && name[0] == '$' && l.system_variables_.is_known(name)) ||
-                         (name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1)));
-      return Value(known ? 1.0 : 0.0);
-    }
-    case Function::IsFile: {
-      // Job Planning, "File functions": TRUE when the file exists in the NCK's file system.
-      // drycut's file system is its folders (main program, search path, standard cycles).
-      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "ISFILE needs a file name as a string");
-      return Value(l.files_->find(normalize_program_name(args[0].text)) ? 1.0 : 0.0);
-    }
-    case Function::StringIs: {
-      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "STRINGIS needs a name as a string");
-      const std::string name = upper_ascii(args[0].text);
-      StringIsContext context;
-      context.is_macro = [&](std::string_view n) { return l.macros_.count(std::string(n)) > 0; };
-      context.is_local_variable = [&](std::string_view n) { return l.frames_.back()->locals.find(n) != nullptr; };
-      context.is_global_variable = [&](std::string_view n) { return l.globals_.find(n) != nullptr; };
-      context.is_program_file = [&](std::string_view n) { return l.files_->find(normalize_program_name(std::string(n))).has_value(); };
-      return Value(static_cast<double>(stringis_code(name, context)));
-    }
-    case Function::Spindle: {
-      // SPI(n) (Job Planning, "SPI"): the axis name of spindle n; drycut names spindles SP<n>.
-      if (args.empty() || !args[0].is_number() || args[0].number < 1 || args[0].number != std::trunc(args[0].number))
-        throw LineError(12150, call.column, "SPI needs a spindle number 1, 2 ...");
-      return Value::of_axis("SP" + std::to_string(static_cast<int64_t>(args[0].number)));
-    }
-    case Function::NameToInt: {
-      // NAMETOINT(array name, name[, no alarm]): the index of `name` among the STRING elements of
-      // a system array such as $MC_AXCONF_CHANAX_NAME_TAB, counted from 0 like the array's own
-      // index (inferred: no manual at hand states the base). Not found: alarm 12550, or -1 when
-      // the third argument is TRUE.
-      if (args.size() < 2 || args[0].is_number() || args[1].is_number())
-        throw LineError(12150, call.column, "NAMETOINT needs an array name and a name as strings");
-      const std::string array = upper_ascii(args[0].text), wanted = upper_ascii(args[1].text);
-      for (int i = 0; i < 64; ++i) {
-        const Value index(static_cast<double>(i));
-        const auto r = l.system_variables_.read(array, std::span<const Value>(&index, 1));
-        if (r.assumed) break;
-        if (!r.value.is_number() && upper_ascii(r.value.text) == wanted) return Value(static_cast<double>(i));
-      }
-      if (args.size() > 2 && args[2].is_number() && args[2].number != 0) return Value(-1.0);
-      throw LineError(12550, call.column, "NAMETOINT: " + wanted + " is not in " + array);
-    }
-    case Function::GetT: {
-      if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");
-      const Value key = Value::of_text(args[0].text);
-      const auto r = l.system_variables_.read("$TC_GETT", std::span<const Value>(&key, 1));
-      if (r.assumed) l.warn(990007, "GETT(\"" + args[0].text + "\"): tool table not available, -1 assumed", call.column);
-      return r.assumed ? Value(-1.0) : r.value;
-    }
-    default: {
-      // A frame function: the FRAME value carries its own text, "CTRANS(X,10,Y,5)", which the
-      // interpreter computes where the frame is written ($P_UIFR, $P_PFRAME; frame_components.hpp).
-      std::string text(call.text);
-      text += '(';
-      char buf[32];
-      for (size_t k = 0; k < args.size(); ++k) {
-        if (k > 0) text += ',';
-        if (args[k].is_number()) {
-          std::snprintf(buf, sizeof buf, "%.17g", args[k].number);
-          text += buf;
-        } else {
-          text += args[k].text;
-        }
-      }
-      text += ')';
-      Value v = Value::of_frame();
-      v.text = std::move(text);
-      return v;
-    }
+    case Function::IsVar: return isvar_value(call, args);
+    case Function::IsFile: return isfile_value(call, args);
+    case Function::StringIs: return stringis_value(call, args);
+    case Function::Spindle: return spi_value(call, args);
+    case Function::NameToInt: return nametoint_value(call, args);
+    case Function::GetT: return gett_value(call, args);
+    default: return frame_function_value(call, args);
   }
+}
+
+Value ProgramLoader::Scope::isvar_value(const ExprNode& call, std::span<const Value> args) const {
+  ProgramLoader& l = loader_;
+  if (args.empty() || args[0].is_number())
+    throw LineError(12150, call.column, "ISVAR needs a name as a string");
+  std::string name = args[0].text;
+  for (char& c : name)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  if (const size_t b = name.find('['); b != std::string::npos) name.resize(b);
+  const bool known = l.find_variable(name) != nullptr ||
+                     (!name.empty() && name[0] == '$' && l.system_variables_.is_known(name)) ||
+                     (name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1)));
+  return Value(known ? 1.0 : 0.0);
+}
+
+Value ProgramLoader::Scope::isfile_value(const ExprNode& call, std::span<const Value> args) const {
+  // Job Planning, "File functions": TRUE when the file exists in the NCK's file system.
+  // drycut's file system is its folders (main program, search path, standard cycles).
+  if (args.empty() || args[0].is_number())
+    throw LineError(12150, call.column, "ISFILE needs a file name as a string");
+  return Value(loader_.files_->find(normalize_program_name(args[0].text)) ? 1.0 : 0.0);
+}
+
+Value ProgramLoader::Scope::stringis_value(const ExprNode& call, std::span<const Value> args) const {
+  ProgramLoader& l = loader_;
+  if (args.empty() || args[0].is_number())
+    throw LineError(12150, call.column, "STRINGIS needs a name as a string");
+  const std::string name = upper_ascii(args[0].text);
+  StringIsContext context;
+  context.is_macro = [&](std::string_view n) { return l.macros_.count(std::string(n)) > 0; };
+  context.is_local_variable = [&](std::string_view n) { return l.frames_.back()->locals.find(n) != nullptr; };
+  context.is_global_variable = [&](std::string_view n) { return l.globals_.find(n) != nullptr; };
+  context.is_program_file = [&](std::string_view n) {
+    return l.files_->find(normalize_program_name(std::string(n))).has_value();
+  };
+  return Value(static_cast<double>(stringis_code(name, context)));
+}
+
+Value ProgramLoader::Scope::nametoint_value(const ExprNode& call, std::span<const Value> args) const {
+  // NAMETOINT(array name, name[, no alarm]): the index of `name` among the STRING elements of
+  // a system array such as $MC_AXCONF_CHANAX_NAME_TAB, counted from 0 like the array's own
+  // index (inferred: no manual at hand states the base). Not found: alarm 12550, or -1 when
+  // the third argument is TRUE.
+  if (args.size() < 2 || args[0].is_number() || args[1].is_number())
+    throw LineError(12150, call.column, "NAMETOINT needs an array name and a name as strings");
+  const std::string array = upper_ascii(args[0].text), wanted = upper_ascii(args[1].text);
+  for (int i = 0; i < 64; ++i) {
+    const Value index(static_cast<double>(i));
+    const auto r = loader_.system_variables_.read(array, std::span<const Value>(&index, 1));
+    if (r.assumed) break;
+    if (!r.value.is_number() && upper_ascii(r.value.text) == wanted) return Value(static_cast<double>(i));
+  }
+  if (args.size() > 2 && args[2].is_number() && args[2].number != 0) return Value(-1.0);
+  throw LineError(12550, call.column, "NAMETOINT: " + wanted + " is not in " + array);
+}
+
+Value ProgramLoader::Scope::gett_value(const ExprNode& call, std::span<const Value> args) const {
+  if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");
+  const Value key = Value::of_text(args[0].text);
+  const auto r = loader_.system_variables_.read("$TC_GETT", std::span<const Value>(&key, 1));
+  if (r.assumed)
+    loader_.warn(990007, "GETT(\"" + args[0].text + "\"): tool table not available, -1 assumed", call.column);
+  return r.assumed ? Value(-1.0) : r.value;
 }
 
 void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t index_count, ExprIndex value,
