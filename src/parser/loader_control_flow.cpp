@@ -463,7 +463,7 @@ void ProgramLoader::execute_repeat_section() {
   if (!one_block && end_label.empty())
     end_line = find_label_between("ENDLABEL", r.start, r.start.offset < repeat_line.offset ? repeat_line.offset : UINT64_MAX);
   if (one_block || !end_label.empty() || end_line) {
-    const auto end = one_block ? start : end_line ? end_line : find_label_position(end_label);
+    const auto end = one_block ? start : end_line ? end_line : find_label_between(end_label, r.start, UINT64_MAX);
     if (!end) throw LineError(14080, column, end_label);
     // The section ends after the end line: find where the next line starts.
     f.reader.seek(*end);
@@ -544,8 +544,10 @@ void ProgramLoader::run_program_section(const std::string& start_label, const st
   Frame& f = *frames_.back();
   const auto start = find_label_position(start_label);
   if (!start) throw LineError(14080, column, start_label + " in " + f.program);
-  const auto end = find_label_position(end_label);
-  if (!end) throw LineError(14080, column, end_label + " in " + f.program);
+  // The end is the first line labelled `end` from the start on: CAM posts close every embedded
+  // section with the same label (Fusion: LABELn: ... LABEL0:), so an earlier one does not count.
+  const auto end = find_label_between(end_label, *start, UINT64_MAX);
+  if (!end) throw LineError(14080, column, end_label + " after " + start_label + " in " + f.program);
   RawLine raw;
   f.reader.seek(*end);
   f.reader.next(raw);
