@@ -77,14 +77,15 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
   }
 }
 
-std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices) const {
+std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece) const {
   if (indices.size() != 1) return std::nullopt;
   const std::string& axis = indices[0].text;
   if (axis.empty()) return std::nullopt;
   if (const int i = interpreter_.extra_axes().index(axis); i >= 0)
     return interpreter_.extra_axes().position(static_cast<size_t>(i));
   for (int k = 0; k < 3; ++k)
-    if (axis[0] == profile_.axes[static_cast<size_t>(k)].name[0]) return interpreter_.position()[k];
+    if (axis[0] == profile_.axes[static_cast<size_t>(k)].name[0])
+      return workpiece ? interpreter_.workpiece_position()[k] : interpreter_.position()[k];
   return std::nullopt;
 }
 
@@ -140,7 +141,11 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
     const double g = indices[0].number;  // beyond 0..99 no group (and no undefined int cast)
     return number(g_group_index(g >= 0 && g <= 99 ? static_cast<int>(g) : -1));
   }
-  if (n == "$P_EP" || n == "$AA_IM" || n == "$AA_IW" || n == "$AA_IEN" || n == "$VA_IM") return number(axis_position(indices));
+  // Workpiece coordinates ($P_EP programmed end point, $AA_IW/$VA_IW actual, $AA_IEN settable
+  // zero system, taken as the workpiece system) and machine coordinates ($AA_IM/$VA_IM, $AA_IB
+  // basic system: the machine here); in a dry run the actual position is the programmed one.
+  if (n == "$P_EP" || n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN") return number(axis_position(indices, true));
+  if (n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB") return number(axis_position(indices, false));
   if (n == "$P_F") return Value(s.feed);
   if (n == "$P_S" || n == "$AA_S") return Value(s.spindle_rpm);
   const ToolState& tools = interpreter_.tools();

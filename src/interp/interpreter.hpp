@@ -53,6 +53,9 @@ class Interpreter {
 
   const ModalState& state() const { return state_; }
   const Eigen::Vector3d& position() const { return position_; }
+  // The tool tip in the workpiece system, in the program's units (G70/G71, DIAMON on a facing
+  // axis): what an absolute end point must say to come back here ($P_EP, $AA_IW).
+  Eigen::Vector3d workpiece_position() const;
   // $P_UIFR[index] = frame (index 0 = G500, 1..4 = G54..G57, 5..99 = G505..G599). Takes effect
   // when the frame is next selected, as on the control; other indices are ignored.
   void set_settable_frame(int index, const Frame& frame);
