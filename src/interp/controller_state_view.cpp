@@ -72,7 +72,19 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
     case 13: return s.inch ? (s.feed_in_geometry_unit ? 3 : 1) : (s.feed_in_geometry_unit ? 4 : 2);  // G70 G71 G700 G710
     case 14: return s.absolute ? 1 : 2;
     case 15: return s.feed_mode == FeedMode::InverseTime ? 1 : s.feed_mode == FeedMode::PerRevolution ? 3 : 2;
+    case 10:  // G60 G64 G641 G642 G643 G644 G645
+      switch (s.transition) {
+        case TransitionMode::ExactStop: return 1;
+        case TransitionMode::Continuous: return 2;
+        case TransitionMode::SmoothDistance: return 3;
+        case TransitionMode::SmoothTolerance: return s.smoothing.code >= 642 && s.smoothing.code <= 645 ? s.smoothing.code - 638 : 4;
+      }
+      return std::nullopt;
+    case 12: return s.exact_stop_window - 600;  // G601 G602 G603
     case 18: return s.intersection_corners ? 2 : 1;
+    case 21: return s.accel == AccelProfile::Soft ? 2 : 1;  // BRISK SOFT (DRIVE)
+    case 30: return static_cast<double>(s.compressor) + 1;   // COMPOF COMPON COMPCURV COMPCAD
+    case 59: return static_cast<double>(s.dynamic_group) + 1;  // DYNNORM DYNPOS DYNROUGH DYNSEMIFIN DYNFINISH DYNPREC
     default: return std::nullopt;
   }
 }

@@ -173,7 +173,9 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
         ctx.compensation_column = g.column;
         continue;
       case 500: case 54: case 55: case 56: case 57: select_settable_frame(ctx, code, g.column); continue;
-      case 601: case 602: case 603: continue;  // exact-stop window: no effect on the planned set-point
+      case 601: case 602: case 603:  // exact-stop window: no effect on the planned set-point
+        state_.exact_stop_window = code;
+        continue;
       case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
       case 291:
         // ISO dialect mode (an option of the control): G, M and addresses mean other things there

@@ -18,7 +18,7 @@ void set_feed_mode(ModalState& s, FeedMode mode) {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 72> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 75> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -95,13 +95,15 @@ constexpr std::array<std::pair<std::string_view, Setter>, 72> kCodes{{
     {"COMPON", [](ModalState& s) { s.compressor = Compressor::Compon; }},
     {"COMPCURV", [](ModalState& s) { s.compressor = Compressor::Compcurv; }},
     {"COMPCAD", [](ModalState& s) { s.compressor = Compressor::Compcad; }},
+    {"G601", [](ModalState& s) { s.exact_stop_window = 601; }},
+    {"G602", [](ModalState& s) { s.exact_stop_window = 602; }},
+    {"G603", [](ModalState& s) { s.exact_stop_window = 603; }},
 }};
 
 // Modal codes of the reset list that shape nothing drycut plans (feed-forward, FIFO control,
 // exact-stop windows ...): accepted so a machine's real MD20150 list can be used as it is.
-constexpr std::array<std::string_view, 9> kNoPathEffect{
-    "FNORM", "FFWOF", "STARTFIFO", "G601", "G602", "G603",
-    "CUT2D", "SPATH", "G290"};
+constexpr std::array<std::string_view, 6> kNoPathEffect{
+    "FNORM", "FFWOF", "STARTFIFO", "CUT2D", "SPATH", "G290"};
 
 }  // namespace
 

@@ -61,6 +61,7 @@ struct ModalState {
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...
   SmoothingRequest smoothing;  // G641..G645 and ADIS/ADISPOS/CTOL/ATOL (corner_smoothing.hpp)
   AccelProfile accel = AccelProfile::Brisk;               // BRISK/SOFT
+  int exact_stop_window = 601;  // G601/G602/G603: read back by $P_GG[12], no effect on the set-point
   machine::DynamicGroup dynamic_group = machine::DynamicGroup::Norm;  // DYNNORM ... DYNPREC
   AxisLimitFactors axis_limits;                                       // ACC[ax] VELOLIM[ax] JERKLIM[ax]
   SplineCondition spline_begin = SplineCondition::Natural;

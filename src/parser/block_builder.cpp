@@ -243,10 +243,23 @@ class ProgramLoader::BlockBuilder {
     const int k = static_cast<int>(n);
     if (item.name == "G") {
       const double code_index = l_.eval(item.expr);
+      if (code_index == 0) {
+        // Index 0 is no code of the group. drycut check reads $P_GG as 0 (it keeps no modal
+        // state), so a macro restoring a saved group must not stop there: warned, nothing set.
+        l_.warn_not_modelled("G[" + std::to_string(k) + "]=0 (no code of the group: nothing selected)", item.column);
+        return;
+      }
       // Range first: a double beyond int is undefined behaviour in the conversion.
       if (!(code_index >= 1 && code_index <= 999) || code_index != std::trunc(code_index))
         throw LineError(12475, item.column, "G[" + std::to_string(k) + "]=" + number_to_text(code_index));
       const int code = g_code_of_group(k, static_cast<int>(code_index));
+      if (const std::string_view named = named_code_of_group(k, static_cast<int>(code_index)); !named.empty()) {
+        Item word = item;  // G[21]=2: SOFT, as if written by name
+        word.name = named;
+        word.index_count = 0;
+        name(word);
+        return;
+      }
       if (code < 0) {
         l_.warn_not_modelled("G[" + std::to_string(k) + "]=" + number_to_text(code_index) + " (G group)", item.column);
         return;

@@ -315,6 +315,25 @@ Support g_code_support(int64_t g) {
   }
 }
 
+// G groups whose members are named commands, in the order of their internal numbers (PGA
+// Fundamentals, "List of G functions": group 21 acceleration profile, 30 compressor, 59
+// dynamic response modes).
+struct NamedGGroup {
+  int group;
+  std::array<std::string_view, 6> names;  // empty: end of the list
+};
+constexpr std::array kNamedGGroups{
+    NamedGGroup{21, {"BRISK", "SOFT", "DRIVE"}},
+    NamedGGroup{30, {"COMPOF", "COMPON", "COMPCURV", "COMPCAD"}},
+    NamedGGroup{59, {"DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN", "DYNFINISH", "DYNPREC"}},
+};
+
+std::string_view named_code_of_group(int group, int index) {
+  for (const auto& g : kNamedGGroups)
+    if (g.group == group && index >= 1 && index <= static_cast<int>(g.names.size())) return g.names[static_cast<size_t>(index - 1)];
+  return {};
+}
+
 int g_code_of_group(int group, int index) {
   if (group == 8 && index >= 6 && index <= 100) return 505 + (index - 6);  // G505 .. G599
   for (const auto& g : kGGroups) {

@@ -34,6 +34,9 @@ bool is_extended_address(std::string_view upper_name);
 // The G code with internal number `index` (from 1) in G group `group` (PGA Fundamentals, list
 // of G groups), for G[group]=index and $P_GG; -1 where drycut does not know the group.
 int g_code_of_group(int group, int index);
+// The named command with internal number `index` in a G group of named members (21 BRISK/SOFT/
+// DRIVE, 30 COMPOF..COMPCAD, 59 DYNNORM..DYNPREC); empty if the group has none or no such index.
+std::string_view named_code_of_group(int group, int index);
 // The group and internal number of a G code, or false.
 bool g_group_of_code(int code, int& group, int& index);
 // Commands written with an axis index and no value (PGA Fundamentals, diameter programming

@@ -35,7 +35,7 @@ constexpr std::array kSyntax{
     Row{"DIAMONA[ax] DIAMOFA[ax] DIAM90A[ax] DIACYCOFA[ax] DIAMCHANA[ax] SCC[ax]", M, "axis-specific diameter programming; the reference axis of G96 (docs/controller-state.md \"Diameter programming\")"},
     Row{"$P_UIFR[n]=CTRANS(..) / $P_UIFR[n,ax,TR|FI|RT|SC|MI]=v / $P_PFRAME=CROT(..)", M, "settable frame (effective at its next selection) and programmable frame (at once), whole or by component"},
     Row{"X1= S1= M2=3 H7=40", M, "extended addresses: axis names, spindle/auxiliary function numbers"},
-    Row{"G[group]=n", M, "indirect G code by group and internal number (groups 1 6 7 8 10 12 13 14 15 18)"},
+    Row{"G[group]=n", M, "indirect G code by group and internal number (groups 1 6 7 8 10 12 13 14 15 18, named 21 30 59)"},
     Row{"M[n]= S[n]= H[n]= T[n]= D[n]=", M, "address extension as an expression"},
     Row{"AX[axis]=", M, "axis given by an AXIS value"},
     Row{"1.5EX3, 'H1F', 'B101'", M, "exponent, hexadecimal and binary constants"},
