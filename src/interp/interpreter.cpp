@@ -146,6 +146,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       case 25: case 26: ctx.speed_limit = code; continue;
       case 9: ctx.exact_stop = true; continue;
       case 53: case 153: ctx.suppress_offsets = true; continue;
+      case 74: case 75: ctx.home_move = code; continue;
       case 58: case 59: ctx.axial_offset = code; continue;
       case 110: ctx.pole = PoleReference::LastPosition; continue;
       case 111: ctx.pole = PoleReference::WorkpieceZero; continue;
@@ -700,6 +701,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     return;
   }
 
+  if (ctx.home_move) {
+    move_to_fixed_point(ctx);
+    return;
+  }
   bool has_axis = false;
   for (const AddressWord& a : ctx.block.addresses)
     if (axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP") has_axis = true;

@@ -177,6 +177,51 @@ std::optional<parser::Block> Interpreter::geometry_positioning_block(const parse
   return moved;
 }
 
+void Interpreter::move_to_fixed_point(BlockContext& ctx) {
+  // G74 X.. Z.. (reference point) / G75 FP=n X.. Z.. (fixed point n, 1..4; PGA Fundamentals,
+  // "Fixed-point approach (G75)", "Reference point approach (G74)"): each axis written goes to
+  // its point in machine coordinates at rapid; the values written are ignored. The points are
+  // MD34100 REFP_SET_POS / MD30600 FIX_POINT_POS of the profile (default 0, warned). drycut
+  // plans one rapid straight move of the carrier; frames, tool length and the compensation do
+  // not act on it. Extra axes written in the block do not move (warned).
+  if (spline_.active()) end_spline_run(nullptr);
+  int point = 1;
+  if (const AddressWord* fp = ctx.block.find_address("FP")) {
+    if (ctx.home_move != 75 || !(fp->value >= 1 && fp->value <= 4) || fp->value != std::trunc(fp->value))
+      raise(ctx, 12160, "FP must be 1..4 and goes with G75", fp->column);
+    point = static_cast<int>(fp->value);
+  }
+  Vector3d target = position_;
+  for (const AddressWord& a : ctx.block.addresses) {
+    const int i = axis_index(a.name);
+    if (i < 0) {
+      if (a.name != "FP" && extra_axes_.index(a.name) >= 0)
+        warn_once(ctx, "G" + std::to_string(ctx.home_move) + " of axis " + a.name + " (the axis does not move)", a.column);
+      continue;
+    }
+    const machine::AxisData& axis = profile_.axes[static_cast<size_t>(i)];
+    std::optional<double> value = ctx.home_move == 74 ? axis.reference_point_mm
+                                  : static_cast<size_t>(point) <= axis.fix_points_mm.size()
+                                      ? std::optional<double>(axis.fix_points_mm[static_cast<size_t>(point - 1)])
+                                      : std::nullopt;
+    if (!value) {
+      warn_once(ctx, 990007,
+                (ctx.home_move == 74 ? "MD34100 REFP_SET_POS of " : "MD30600 FIX_POINT_POS[" + std::to_string(point - 1) + "] of ") +
+                    axis.name + " not in the machine profile: 0 assumed",
+                a.column);
+      value = 0.0;
+    }
+    target[i] = *value;
+  }
+  check_limits(ctx, target);
+  PathElement e = element_template(ctx, ElementKind::Line);
+  e.curve = std::make_shared<geometry::LineCurve>(position_, target);
+  e.rapid = true;
+  e.label = "G" + std::to_string(ctx.home_move);
+  position_ = target;
+  emit(std::move(e));
+}
+
 void Interpreter::position_geometry_axes(BlockContext& ctx, std::vector<ExtraAxisMove> extra) {
   // POS/POSA of geometry axes alone (Fundamentals, "Traversing positioning axes"): each axis on
   // its own interpolator at FA[ax] (else MD32060 POS_AX_VELO), to its end before the block ends.

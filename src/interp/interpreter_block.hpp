@@ -111,6 +111,7 @@ struct Interpreter::BlockContext {
   const parser::Block& block;
   bool exact_stop = false;      // G9
   bool suppress_offsets = false;  // G53, G153, SUPA: no frame for this block
+  int home_move = 0;              // G74 (reference point) / G75 (fixed point) in this block
   bool dwell = false;           // G4
   int speed_limit = 0;          // G25 / G26: S is the lower / upper spindle speed limit
   bool tool_change = false;     // M6

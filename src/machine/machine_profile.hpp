@@ -32,6 +32,9 @@ struct AxisData {
   double max_jerk_mm_s3 = 0;      // MD32431 MAX_AX_JERK
   double transition_jerk_mm_s3 = 0;  // MD32432 PATH_TRANS_JERK_LIM (SOFT, at block transitions); 0 = max_jerk
   double compress_pos_tol_mm = 0.1;  // MD33100 COMPRESS_POS_TOL: compressor deviation from the programmed points
+  // G75 FP=1..4 / G74 targets in machine coordinates; empty / nullopt: not in the profile.
+  std::vector<double> fix_points_mm;               // MD30600 FIX_POINT_POS[0..3]
+  std::optional<double> reference_point_mm;        // MD34100 REFP_SET_POS[0]
 };
 
 // The NC block compressor COMPON/COMPCURV/COMPCAD (docs/compressor.md): channel machine and

@@ -26,6 +26,17 @@ constexpr AxisDimensions kLinear{Dimension::Length, Dimension::Velocity, Dimensi
 constexpr AxisDimensions kRotary{Dimension::Angle, Dimension::AngularVelocity, Dimension::AngularAcceleration,
                                  Dimension::AngularJerk};
 
+// MD30600 FIX_POINT_POS: up to four fixed points of the axis (G75 FP=1..4), an array of positions.
+void read_fix_points(ProfileObjectReader& r, const char* key, AxisData& a) {
+  const json* node = r.child(key);
+  if (!node) return;
+  if (!node->is_array() || node->empty() || node->size() > 4) r.fail(key, "must be an array of 1 to 4 positions (MD30600)");
+  for (const json& v : *node) {
+    if (!v.is_number()) r.fail(key, "must be an array of 1 to 4 positions (MD30600)");
+    a.fix_points_mm.push_back(v.get<double>());
+  }
+}
+
 AxisData read_axis(const json& node, const std::string& path, const std::string& name, bool geometry) {
   ProfileObjectReader r(node, path);
   AxisData a;
@@ -58,6 +69,8 @@ AxisData read_axis(const json& node, const std::string& path, const std::string&
   if (auto v = r.quantity("pos_velocity", dim.velocity)) a.pos_velocity_mm_s = require_positive(*v, r.key_path("pos_velocity"));
   if (auto v = r.quantity("compress_pos_tol", dim.position))
     a.compress_pos_tol_mm = require_positive(*v, r.key_path("compress_pos_tol"));
+  if (auto v = r.quantity("reference_point", dim.position)) a.reference_point_mm = *v;
+  read_fix_points(r, a.rotary ? "fix_points_deg" : "fix_points_mm", a);
   r.reject_unknown_keys();
   if (!(a.min_mm < a.max_mm)) throw ProfileError(path + ".min: must be < max (software limit range)");
   return a;
@@ -107,6 +120,8 @@ json axes_to_json(const MachineProfile& p) {
               {std::string("pos_velocity") + vel, a.pos_velocity_mm_s * 60.0},
               {std::string("compress_pos_tol_") + pos, a.compress_pos_tol_mm}};
     if (a.rotary) o["rotary"] = true;
+    if (!a.fix_points_mm.empty()) o[std::string("fix_points_") + pos] = a.fix_points_mm;
+    if (a.reference_point_mm) o[std::string("reference_point_") + pos] = *a.reference_point_mm;
     if (a.misc_function_mask != 0) o["misc_function_mask"] = a.misc_function_mask;
     if (a.modulo) {
       o["modulo"] = true;

@@ -88,10 +88,10 @@ constexpr std::array kCommands{
     CommandEntry{"FA", M},      CommandEntry{"DYNPREC", M},
     // Contour definition by an angle (Fundamentals, "Contour definitions"): ANG is an address
     // (kAddresses below), as are the corner words RND, RNDM, CHF, CHR, FRC, FRCM.
-    // Smooth approach and retraction parameters, G75/G751 fixed point, tool offsets along the
+    // Smooth approach and retraction parameters, tool offsets along the
     // path, lead/tilt angles, continuous measurement (Fundamentals, Job Planning).
     CommandEntry{"DISR", N},    CommandEntry{"DISRP", N},   CommandEntry{"FAD", N},
-    CommandEntry{"FP", N},      CommandEntry{"TOFFR", N},   CommandEntry{"LEAD", N},
+    CommandEntry{"TOFFR", N},   CommandEntry{"LEAD", N},
     CommandEntry{"TILT", N},    CommandEntry{"MEAW", N},    CommandEntry{"MEAC", N},
     CommandEntry{"RTLION", N},  CommandEntry{"RTLIOF", N},
     // Frame commands that align the frame with the tool or rotate by solid angles (Job
@@ -200,11 +200,11 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 56> kAddresses{
+constexpr std::array<std::string_view, 57> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC", "ANG"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC", "ANG", "FP"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{
@@ -302,7 +302,9 @@ Support g_code_support(int64_t g) {
     case 58: case 59:  // axial programmable offsets (the interpreter's frame chain)
       return M;
     case 5: case 7: case 8:
-    case 74: case 75: case 140: case 141:
+    case 74: case 75:  // reference point / fixed point approach (the interpreter)
+      return M;
+    case 140: case 141:
     case 142: case 143: case 147: case 148: case 247: case 248:
     case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:
     case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
