@@ -288,6 +288,9 @@ class Interpreter {
   void set_master_spindle(const BlockContext& ctx, const parser::CommandWord& c);
   // A swivel head's rotation of the tool (TCOABS/TCOFR with swivel_kinematics "head").
   Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
+  // A swivel (TCOABS/TCOFR in a rotated frame) on a machine whose part turns ("table") or whose
+  // kinematics the profile lacks: the linear axes' positions depend on the table's pivot.
+  bool part_swivelled_ = false;
   // On the heap (~46 KB for the 100 frames): an Interpreter on the stack stays small.
   std::vector<Frame> settable_frames_ = std::vector<Frame>(kSettableFrames);  // $P_UIFR
   std::array<bool, kSettableFrames> settable_defined_{};

@@ -40,6 +40,7 @@ void Interpreter::orient_tool(const BlockContext& ctx, const std::string& comman
     tool_orientation_ = block_frame(ctx).linear();
     return;
   }
+  part_swivelled_ = !block_frame(ctx).linear().isIdentity(1e-12);
   if (profile_.swivel_kinematics == "none" && !block_frame(ctx).is_pure_translation())
     warn_once(ctx, command + " (no swivel kinematics in the machine profile: the tool length stays on the machine axis)",
               column);

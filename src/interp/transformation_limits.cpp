@@ -33,6 +33,18 @@ bool Interpreter::apply_transformation_command(const parser::CommandWord& c) {
 }
 
 bool Interpreter::limits_checked(const BlockContext& ctx) {
+  if (part_swivelled_) {
+    // A swivelled table turns the part: where the linear axes stand depends on the table's pivot
+    // ($TC_CARR kinematics), which the profile does not give; the rotated frame alone would map
+    // the programmed point onto the wrong machine axes (frame Y onto machine Z after A-90).
+    if (block_frame(ctx).linear().isIdentity(1e-12)) {
+      part_swivelled_ = false;
+    } else {
+      warn_once(ctx, "software limit switches not checked while a swivel turns the part (the linear axes' "
+                     "positions depend on the table's pivot, which the profile does not give)", 0);
+      return false;
+    }
+  }
   if (unmodelled_transformation_.empty()) return true;
   warn_once(ctx, "software limit switches not checked while " + unmodelled_transformation_ +
                      " is active (the programmed axes are not the machine axes)", 0);
