@@ -46,6 +46,7 @@ ExtraAxes::ExtraAxes(const machine::MachineProfile& profile)
     : axes_(profile.extra_axes),
       position_(axes_.size(), 0.0),
       in_group_(axes_.size(), false),
+      feed_weight_(axes_.size(), 1.0),
       positioning_feed_(axes_.size(), 0.0) {
   for (size_t i = 0; i < axes_.size(); ++i) positioning_feed_[i] = axes_[i].pos_velocity_mm_s;
 }

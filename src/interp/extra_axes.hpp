@@ -59,6 +59,9 @@ class ExtraAxes {
   // The geometry axes in the group: bit 0 X, bit 1 Y, bit 2 Z (7: all, the default).
   uint8_t geometry_feed_axes() const { return geometry_group_; }
   bool in_feed_group(size_t i) const { return in_group_[i]; }
+  // FGREF[ax]: mm of path per degree of rotary axis i in the feed group (1: not set).
+  void set_feed_weight(size_t i, double mm_per_unit) { feed_weight_[i] = mm_per_unit; }
+  double feed_weight(size_t i) const { return feed_weight_[i]; }
 
   // FA[ax]: the positioning feed in units per s; MD32060 until programmed.
   void set_positioning_feed(size_t i, double per_s) { positioning_feed_[i] = per_s; }
@@ -74,6 +77,7 @@ class ExtraAxes {
   std::vector<machine::AxisData> axes_;
   std::vector<double> position_;
   std::vector<bool> in_group_;
+  std::vector<double> feed_weight_;
   uint8_t geometry_group_ = 7;
   std::vector<double> positioning_feed_;
   std::vector<std::string> running_;

@@ -125,6 +125,7 @@ class Interpreter {
   std::optional<parser::Block> geometry_positioning_block(const parser::Block& block, GeometryPositioning& mode) const;
   void position_geometry_axes(BlockContext& ctx, std::vector<ExtraAxisMove> extra);
   void move_to_fixed_point(BlockContext& ctx);  // G74 / G75 (interpreter_axes.cpp)
+  void set_feed_reference_radius(BlockContext& ctx, const parser::AxisWord& w);  // FGREF[ax]=
   void execute_block(const parser::Block& block, GeometryPositioning geometry_positioning);
   void set_axis_limit(BlockContext& ctx, const parser::AxisWord& word);  // ACC/VELOLIM/JERKLIM[ax]=
   bool names_channel_axis(const std::string& name) const;  // the axis of FA[..], ACC[..] is valid

@@ -85,6 +85,22 @@ bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWor
   return false;
 }
 
+void Interpreter::set_feed_reference_radius(BlockContext& ctx, const AxisWord& w) {
+  // FGREF[ax]=r (Fundamentals, "Feedrate for rotary axes: FGREF"): with a rotary axis in the
+  // feed group, its degrees count in the path length as the arc they make at radius r, so F
+  // (mm/min) means the feed at that radius. drycut scales the axis's share of the length.
+  const int i = extra_axes_.index(w.axis);
+  if (i < 0 || !extra_axes_.data(static_cast<size_t>(i)).rotary) {
+    if (i < 0 && axis_index(w.axis) < 0 && !names_channel_axis(w.axis))
+      raise(ctx, 12550, "FGREF[" + w.axis + "]: not an axis of the channel", w.column);
+    warn_once(ctx, "FGREF[" + w.axis + "] (acts on rotary axes only)", w.column);
+    return;
+  }
+  if (!(w.value >= 0)) raise(ctx, 12160, "FGREF[" + w.axis + "] must be >= 0", w.column);
+  const double radius_mm = w.value * geometry_unit();
+  extra_axes_.set_feed_weight(static_cast<size_t>(i), radius_mm > 0 ? 2.0 * std::numbers::pi * radius_mm / 360.0 : 1.0);
+}
+
 void Interpreter::apply_axis_words(BlockContext& ctx) {
   // FA[ax] first: `POS[A]=30 FA[A]=600` moves A at the FA of its own block, wherever it stands.
   std::vector<const AxisWord*> words;
@@ -122,6 +138,7 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
       case AxisWordKind::AccelPercent:
       case AxisWordKind::VelocityPercent:
       case AxisWordKind::JerkPercent: set_axis_limit(ctx, w); break;
+      case AxisWordKind::FeedReferenceRadius: set_feed_reference_radius(ctx, w); break;
     }
   }
 }
@@ -354,7 +371,9 @@ std::vector<ExtraAxisMove> Interpreter::take_extra_axis_moves(BlockContext& ctx)
   for (const auto& [i, word] : ctx.extra_words) {
     const double start = extra_axes_.position(i);
     const double travel = move_extra_axis(ctx, i, word->value, word->mode, word->column);
-    if (travel != 0) moves.push_back({static_cast<int>(i), extra_axes_.data(i).name, start, travel, extra_axes_.in_feed_group(i)});
+    if (travel != 0)
+      moves.push_back({static_cast<int>(i), extra_axes_.data(i).name, start, travel, extra_axes_.in_feed_group(i),
+                       extra_axes_.feed_weight(i)});
   }
   return moves;
 }

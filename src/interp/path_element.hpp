@@ -104,6 +104,9 @@ struct ExtraAxisMove {
   double start = 0;    // machine position (degrees for a rotary axis)
   double travel = 0;   // signed
   bool in_feed_group = false;  // FGROUP: its travel counts in the length F refers to
+  // mm of path per unit of travel in that length: FGREF[ax]=r gives a rotary axis 2·π·r/360 mm
+  // per degree; 1 without FGREF (degrees count as mm).
+  double feed_weight = 1.0;
 };
 
 // A positioning axis (POS/POSA, SPOS/SPOSA): its own interpolator, from rest to rest.
@@ -186,7 +189,7 @@ struct PathElement {
     double grouped = grouped_geometry * grouped_geometry, all = geometry * geometry;
     for (const auto& m : extra_axes) {
       all += m.travel * m.travel;
-      if (m.in_feed_group) grouped += m.travel * m.travel;
+      if (m.in_feed_group) grouped += m.travel * m.travel * m.feed_weight * m.feed_weight;
     }
     return std::sqrt(grouped > 1e-18 ? grouped : all);
   }

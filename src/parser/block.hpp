@@ -80,7 +80,7 @@ struct SystemWrite {
 // spindle, FA[ax]= sets a positioning axis's feed. ACC[ax]=, VELOLIM[ax]=, JERKLIM[ax]= scale an
 // axis's acceleration, velocity and jerk limits in percent (Fundamentals, "Programmable
 // acceleration override (ACC)"; Function Manual B2, "Programmable dynamic limits").
-enum class AxisWordKind : uint8_t { Pos, PosA, SPos, SPosA, AxialFeed, AccelPercent, VelocityPercent, JerkPercent };
+enum class AxisWordKind : uint8_t { Pos, PosA, SPos, SPosA, AxialFeed, AccelPercent, VelocityPercent, JerkPercent, FeedReferenceRadius };
 struct AxisWord {
   AxisWordKind kind = AxisWordKind::Pos;
   std::string axis;  // upper case; the spindle number as text for SPOS[n] (empty for SPOS=: the master)

@@ -131,7 +131,8 @@ class ProgramLoader::BlockBuilder {
     static constexpr std::pair<std::string_view, AxisWordKind> kWords[] = {
         {"POS", AxisWordKind::Pos}, {"POSA", AxisWordKind::PosA}, {"FA", AxisWordKind::AxialFeed},
         {"SPOS", AxisWordKind::SPos}, {"SPOSA", AxisWordKind::SPosA}, {"ACC", AxisWordKind::AccelPercent},
-        {"VELOLIM", AxisWordKind::VelocityPercent}, {"JERKLIM", AxisWordKind::JerkPercent}};
+        {"VELOLIM", AxisWordKind::VelocityPercent}, {"JERKLIM", AxisWordKind::JerkPercent},
+        {"FGREF", AxisWordKind::FeedReferenceRadius}};
     const auto* hit = std::find_if(std::begin(kWords), std::end(kWords), [&](const auto& w) { return w.first == item.name; });
     if (hit == std::end(kWords)) return false;
     const bool spindle = hit->second == AxisWordKind::SPos || hit->second == AxisWordKind::SPosA;

@@ -56,7 +56,7 @@ constexpr std::array kCommands{
     CommandEntry{"WAITP", M},   CommandEntry{"WAITS", M},   CommandEntry{"LIMS", N},
     CommandEntry{"PRESETON", N}, CommandEntry{"CPROT", N},  CommandEntry{"ORIRESET", N},
     CommandEntry{"FL", N},      CommandEntry{"ACC", M},     CommandEntry{"JERKLIM", M},
-    CommandEntry{"VELOLIM", M}, CommandEntry{"FGREF", N},
+    CommandEntry{"VELOLIM", M}, CommandEntry{"FGREF", M},
     // OTOL: the orientation tolerance of smoothing/compressors, which only acts under an
     // orientation transformation (TRAORI), itself not modelled and warned.
     CommandEntry{"OTOL", E},    CommandEntry{"TOFFON", N},
