@@ -529,9 +529,14 @@ bool ProgramLoader::check_endless_loop() {
     case LoopGuard::Repeat::WaitsOnInput:
       // On the machine the PLC or the process changes the input and the wait ends; a dry run
       // has neither, so the wait ends at once and takes no time (docs/controller-state.md).
-      warn(990014, "loop waits for " + system_variables_.last_input_read() +
-                       " (give it a value in the profile's machine_data to model the signal)",
+    {
+      // Only an input or PLC datum can be given a value in the profile; the operator at M0 and
+      // a synchronized action's variables cannot.
+      const std::string& what = system_variables_.last_input_read();
+      const bool signal = classify_system_variable(what.substr(0, what.find('['))) == SystemVariableClass::InputOutput;
+      warn(990014, "loop waits for " + what + (signal ? " (give it a value in the profile's machine_data to model the signal)" : ""),
            0);
+    }
       return true;
   }
   return false;

@@ -132,7 +132,11 @@ static std::optional<double> r_parameter_index(std::string_view name, std::span<
 }
 
 std::optional<Value> ProgramLoader::program_variable(std::string_view name, std::span<const Value> indices) const {
-  if (const auto r = r_parameter_index(name, indices)) return Value(scope_->r_parameter(*r, 0));
+  if (const auto r = r_parameter_index(name, indices)) {
+    // $Rn is the form synchronized actions write: after one was programmed, a loop polling it waits.
+    if (sync_actions_seen_) system_variables_.note_external_read("$R" + number_to_text(*r) + " (written by a synchronized action)");
+    return Value(scope_->r_parameter(*r, 0));
+  }
   if (frames_.empty()) return std::nullopt;
   const Frame& f = *frames_.back();
   // $P_SUBPAR[n]: was parameter n (from 1) given in the call of this program (Job Planning,

@@ -197,6 +197,7 @@ bool ProgramLoader::execute_line(Block& out) {
       case Statement::SyncAction:
       case Statement::Interrupt:
         f.executed_block = true;
+        sync_actions_seen_ = true;
         warn_not_modelled(parsed_.statement == Statement::SyncAction ? "synchronized action (" + std::string(parsed_.call_name) + ")"
                                                                      : std::string(parsed_.call_name),
                           parsed_.statement_column);

@@ -185,6 +185,7 @@ class ProgramLoader {
   VariableTable globals_;  // GUD: definition files
   bool program_global_data_ = false;  // MD11120 LUD_EXTENDED_SCOPE: main program variables are PUD
   SystemVariables system_variables_;
+  bool sync_actions_seen_ = false;  // a synchronized action or interrupt was programmed ($Rn polls wait)
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
   std::array<bool, 256> macro_initials_{};  // first letters of the macro names (both cases)
   std::string macro_initial_list_;           // the same letters, each once

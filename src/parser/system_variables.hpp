@@ -83,6 +83,12 @@ class SystemVariables {
   // before it have run (an implicit STOPRE; Job Planning, "Preprocessing stop (STOPRE)").
   uint64_t main_run_reads() const { return main_run_reads_; }
   const std::string& last_input_read() const { return last_input_; }
+  // A value something outside the program may change was read (the operator at M0/M1, a
+  // synchronized action): a loop that repeats after such a read waits, as on an input.
+  void note_external_read(const std::string& what) const {
+    ++input_reads_;
+    last_input_ = what;
+  }
 
  private:
   MachineDataMap values_;                                   // machine data, I/O (from the profile)
