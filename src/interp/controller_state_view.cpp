@@ -11,6 +11,8 @@
 
 namespace drycut::interp {
 namespace {
+// tool_datum's parameter for $TC_DPNT (number of teeth): beyond the $TC_DPn numbers 1..25.
+constexpr int kTeeth = 100;
 
 using parser::Value;
 
@@ -102,6 +104,7 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
 }
 
 std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<const Value> indices) const {
+  // parameter: n of $TC_DPn, or kTeeth for $TC_DPNT.
   // $TC_DPn[t, d]: edge d of tool t; DP3 = length 1, DP6 = radius, DP12/DP15 their wear.
   if (indices.size() != 2 || !indices[0].is_number() || !indices[1].is_number()) return std::nullopt;
   const machine::Tool* tool = interpreter_.tools().find(parser::number_to_text(indices[0].number));
@@ -115,6 +118,7 @@ std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<
       case 6: return e.radius_mm - e.radius_wear_mm;
       case 12: return e.length_wear_mm;
       case 15: return e.radius_wear_mm;
+      case kTeeth: return static_cast<double>(e.teeth);
       default: return 0.0;
     }
   }
@@ -163,7 +167,11 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
   if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
-  if (n == "$P_TOOLL") return Value(tools.offsets().length_mm);
+  if (n == "$P_TOOLL") {
+    // $P_TOOLL[1..3]: lengths 1, 2, 3 of the active edge (length 3 is not kept: 0); no index: length 1.
+    const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 1.0;
+    return Value(k == 1 ? tools.offsets().length_mm : k == 2 ? tools.offsets().length2_mm : 0.0);
+  }
   if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
   if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
   // The master spindle's number (MD20090, SETMS(n)).
@@ -176,7 +184,10 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
     const double k = indices[0].number;
     return number(tool_datum(k >= 1 && k <= 25 ? static_cast<int>(k) : 0, edge_indices));
   }
+  if (n == "$TC_DP1") return number(tool_datum(1, indices));
   if (n == "$TC_DP3") return number(tool_datum(3, indices));
+  if (n == "$TC_DP4") return number(tool_datum(4, indices));
+  if (n == "$TC_DPNT") return number(tool_datum(kTeeth, indices));
   if (n == "$TC_DP6") return number(tool_datum(6, indices));
   if (n == "$TC_DP12") return number(tool_datum(12, indices));
   if (n == "$TC_DP15") return number(tool_datum(15, indices));
