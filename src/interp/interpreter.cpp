@@ -325,6 +325,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "DISC") {
       if (a.value < 0 || a.value > 100) raise(ctx, 12160, "DISC must be 0..100", a.column);
       state_.disc = a.value;
+      // DISC > 0 lets the G450 transition circle deviate towards the intersection (Fundamentals,
+      // "Corner behavior G450/G451, DISC"); drycut keeps the plain circle (cutter_compensation.hpp).
+      if (a.value > 0) warn_once(ctx, "DISC>0 (the G450 transition stays the plain circle, as DISC=0)", a.column);
     } else if (!parser::is_linear_value_mode(a.mode) && extra_axes_.index(n) < 0 && !is_axis_letter_name(n)) {
       // DC/ACP/ACN choose the way of a rotary axis: on X, Y, Z and non-axis words the control
       // refuses them (an extra axis the profile lacks is a warning below; a linear one: 168xx).
