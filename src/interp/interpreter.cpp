@@ -303,7 +303,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n.size() > 1 && n[0] == 'T' && n.find_first_not_of("0123456789", 1) == std::string::npos) {
       // T<n>=t / T[n]=t: tool t for spindle n (Fundamentals, "Tool change with T command":
       // address extension = spindle number). The master spindle's is the T drycut models.
-      if (std::stoi(std::string(n.substr(1))) == master_spindle()) {
+      if (n.size() <= 3 && std::stoi(std::string(n.substr(1))) == master_spindle()) {
         if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
           raise(ctx, 12160, "T number must be a whole number 0..32000", a.column);
         program_tool(ctx, std::to_string(static_cast<long long>(a.value)), a.column);
@@ -719,6 +719,8 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     move_to_fixed_point(ctx);
     return;
   }
+  if (const AddressWord* fp = ctx.block.find_address("FP"))
+    warn_once(ctx, "FP= without G75 (it selects the fixed point of G75 only)", fp->column);
   bool has_axis = false;
   for (const AddressWord& a : ctx.block.addresses)
     if (axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP") has_axis = true;

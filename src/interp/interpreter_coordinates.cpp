@@ -40,7 +40,10 @@ void Interpreter::orient_tool(const BlockContext& ctx, const std::string& comman
     tool_orientation_ = block_frame(ctx).linear();
     return;
   }
-  part_swivelled_ = !block_frame(ctx).linear().isIdentity(1e-12);
+  // Only a rotation that tilts the working plane (its normal) is a swivel of the part; ROT about
+  // the tool axis is an ordinary frame the linear axes follow.
+  const Vector3d normal = Vector3d::Unit(state_.plane_normal_axis());
+  part_swivelled_ = (block_frame(ctx).linear() * normal - normal).norm() > 1e-9;
   if (profile_.swivel_kinematics == "none" && !block_frame(ctx).is_pure_translation())
     warn_once(ctx, command + " (no swivel kinematics in the machine profile: the tool length stays on the machine axis)",
               column);

@@ -66,9 +66,9 @@ class ProgramLoader::BlockBuilder {
     l_.m_used_.set(static_cast<size_t>(code));
     has_words_ = true;
     if (code == 17) action_ = PendingAction::Return;
-    // At M0/M1 the operator may change values (R parameters) before restarting: a loop through
-    // the stop that repeats waits for the operator, it is not endless.
-    if (code == 0 || code == 1) l_.system_variables_.note_external_read("the operator at M" + std::to_string(code));
+    // At M0 the operator may change values (R parameters) before restarting: a loop through the
+    // stop that repeats waits for the operator, it is not endless. (M1 is optional: not counted.)
+    if (code == 0) l_.system_variables_.note_external_read("the operator at M0");
     if (code == 2 || code == 30) {
       // In a called program M2/M30 end it and return to the calling level, as M17 does
       // (Fundamentals, "Subprograms": a subprogram, like a main program, may end with M2; there
