@@ -204,7 +204,7 @@ class Interpreter {
   Target target_position(BlockContext& ctx);
   void apply_contour_angle(const BlockContext& ctx, const Frame& frame, Target& t);  // ANG= with one end coordinate
   // Two straight lines by angles: holds the first ANG=, then runs the first line to the corner.
-  bool hold_contour_angle(const BlockContext& ctx, bool has_axis);
+  bool hold_contour_angle(BlockContext& ctx, bool has_axis);
   void run_to_contour_corner(BlockContext& ctx);
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
   // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
@@ -253,6 +253,12 @@ class Interpreter {
   DynamicsMode last_dynamics_;
   bool ended_ = false;
   std::optional<double> held_angle_deg_;  // ANG= of a block without end point: the first of two lines
+  // RND/CHF/CHR (and FRC) written in that block: the corner where the two lines meet.
+  struct HeldCorner {
+    ContourCornerKind kind = ContourCornerKind::None;
+    double size_mm = 0.0, frc = 0.0;
+    uint32_t column = 0;
+  } held_corner_;
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
   double clock_wait_s_ = 0.0;    // clock polls not yet emitted as a dwell (poll_clock)
   double waited_s_ = 0.0;               // clock waits emitted so far (part of nominal_time_s_)
