@@ -300,18 +300,14 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       // Thread start angle: shifts where the thread starts on the circumference, not its time.
     } else if (n == "OVR") {
       if (a.value != 100.0) warn_once(ctx, "OVR (drycut plans at 100 % override)", a.column);
-    } else if (n.size() > 1 && n[0] == 'T' && n.find_first_not_of("0123456789", 1) == std::string::npos) {
-      // T<n>=t / T[n]=t: tool t for spindle n (Fundamentals, "Tool change with T command":
+    } else if (n[0] == 'T' && n.find_first_not_of("0123456789", 1) == std::string::npos) {
+      // T, or T<n>=t / T[n]=t: tool t for spindle n (Fundamentals, "Tool change with T command":
       // address extension = spindle number). The master spindle's is the T drycut models.
-      if (n.size() <= 3 && std::stoi(std::string(n.substr(1))) == master_spindle()) {
-        if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
-          raise(ctx, 12160, "T number must be a whole number 0..32000", a.column);
-        program_tool(ctx, std::to_string(static_cast<long long>(a.value)), a.column);
-      } else {
+      if (n.size() > 1 && (n.size() > 3 || std::stoi(std::string(n.substr(1))) != master_spindle())) {
         warn_once(ctx, std::string(n) + "= (a tool for spindle " + std::string(n.substr(1)) + ", not the master spindle: not simulated)",
                   a.column);
+        continue;
       }
-    } else if (n == "T") {
       // Checked before the conversion: a double outside long long's range is undefined there.
       if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
         raise(ctx, 12160, "T number must be a whole number 0..32000", a.column);

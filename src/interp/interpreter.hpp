@@ -109,7 +109,15 @@ class Interpreter {
   bool apply_corner_address(BlockContext& ctx, const parser::AddressWord& a);
   // The chamfer or rounding the block asks for at the end of its element e (a G0/G1 line);
   // warns where the block is of another kind.
-  void request_corner(BlockContext& ctx, PathElement& e);
+  // The chamfer/rounding words of a block (RND/RNDM/CHF/CHR with FRC), as request_corner reads them.
+  struct CornerWords {
+    ContourCornerKind kind = ContourCornerKind::None;
+    double size_mm = 0.0, frc = 0.0;
+    uint32_t column = 0;
+  };
+  static CornerWords corner_words(const BlockContext& ctx);
+  void request_corner(BlockContext& ctx, PathElement& e) { request_corner(ctx, e, corner_words(ctx)); }
+  void request_corner(BlockContext& ctx, PathElement& e, const CornerWords& words);
   void warn_unused_corner(BlockContext& ctx);  // RND/CHF/CHR in a block without a line
   void apply_m_words(BlockContext& ctx);
   // Extra axes and positioning axes (interpreter_axes.cpp, docs/axes.md).
@@ -254,11 +262,7 @@ class Interpreter {
   bool ended_ = false;
   std::optional<double> held_angle_deg_;  // ANG= of a block without end point: the first of two lines
   // RND/CHF/CHR (and FRC) written in that block: the corner where the two lines meet.
-  struct HeldCorner {
-    ContourCornerKind kind = ContourCornerKind::None;
-    double size_mm = 0.0, frc = 0.0;
-    uint32_t column = 0;
-  } held_corner_;
+  CornerWords held_corner_;
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
   double clock_wait_s_ = 0.0;    // clock polls not yet emitted as a dwell (poll_clock)
   double waited_s_ = 0.0;               // clock waits emitted so far (part of nominal_time_s_)

@@ -200,7 +200,7 @@ bool Interpreter::hold_contour_angle(BlockContext& ctx, bool has_axis) {
   held_angle_deg_ = ang->value;
   // A rounding or chamfer written here belongs to the corner of the two lines (Fundamentals,
   // "Contour definitions": ANG=α1 RND=r, then X.. Y.. ANG=α2); it is requested there.
-  held_corner_ = {ctx.corner, ctx.corner_size_mm, ctx.frc, ctx.corner_column};
+  held_corner_ = corner_words(ctx);
   ctx.corner_used = true;
   return true;
 }
@@ -236,15 +236,9 @@ void Interpreter::run_to_contour_corner(BlockContext& ctx) {
   corner[plane.second] += along * d1y;
   corner[plane.normal] = end[plane.normal];  // the infeed axis moves with the first line
   PathElement e = build_line(ctx, frame.to_outer(corner) + length_applied_);
-  const HeldCorner held = std::exchange(held_corner_, HeldCorner{});
-  if (held.kind != ContourCornerKind::None) {
-    // The first block's word, requested on the first line as if this block had written it.
-    const auto own = std::make_tuple(ctx.corner, ctx.corner_size_mm, ctx.frc, ctx.corner_column);
-    std::tie(ctx.corner, ctx.corner_size_mm, ctx.frc, ctx.corner_column) =
-        std::make_tuple(held.kind, held.size_mm, held.frc, held.column);
-    request_corner(ctx, e);
-    std::tie(ctx.corner, ctx.corner_size_mm, ctx.frc, ctx.corner_column) = own;
-  }
+  // The first block's word, requested on the first line as if this block had written it.
+  const CornerWords held = std::exchange(held_corner_, CornerWords{});
+  if (held.kind != ContourCornerKind::None) request_corner(ctx, e, held);
   position_ = e.curve->end();
   check_limits(ctx, position_);
   emit(std::move(e));

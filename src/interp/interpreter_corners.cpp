@@ -40,12 +40,16 @@ bool Interpreter::apply_corner_address(BlockContext& ctx, const AddressWord& a) 
   return false;
 }
 
-void Interpreter::request_corner(BlockContext& ctx, PathElement& e) {
+Interpreter::CornerWords Interpreter::corner_words(const BlockContext& ctx) {
+  return {ctx.corner, ctx.corner_size_mm, ctx.frc, ctx.corner_column};
+}
+
+void Interpreter::request_corner(BlockContext& ctx, PathElement& e, const CornerWords& words) {
   ContourCornerRequest r;
   r.program_level = ctx.block.program_level;
-  if (ctx.corner != ContourCornerKind::None) {
-    r.kind = ctx.corner;
-    r.size_mm = ctx.corner_size_mm;
+  if (words.kind != ContourCornerKind::None) {
+    r.kind = words.kind;
+    r.size_mm = words.size_mm;
   } else if (state_.rndm_mm > 0) {
     r.kind = ContourCornerKind::Round;
     r.size_mm = state_.rndm_mm;
@@ -59,10 +63,10 @@ void Interpreter::request_corner(BlockContext& ctx, PathElement& e) {
       !(circle && r.kind == ContourCornerKind::Round)) {
     warn_once(ctx, std::string(corner_word(r)) + " at the end of a " + std::string(motion_mode_name(state_.motion)) +
                        " block (modelled between straight G0/G1 blocks, and RND next to circles: the corner stays sharp)",
-              ctx.corner_column);
+              words.column);
     return;
   }
-  const double frc = ctx.frc > 0 ? ctx.frc : state_.frcm;
+  const double frc = words.frc > 0 ? words.frc : state_.frcm;
   if (frc > 0 && state_.feed_mode == FeedMode::InverseTime) {
     warn_once(ctx, "FRC/FRCM under G93 (the corner takes the next block's feed)", 0);
   } else if (frc > 0) {

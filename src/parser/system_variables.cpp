@@ -58,7 +58,8 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   if (name.size() > 1 && (name[1] == 'A' || name[1] == 'V')) ++main_run_reads_;
   // Markers and parameters of synchronized actions (Job Planning, "Synchronized actions":
   // $AC_MARKER, $AC_PARAM): the actions change them while the program polls them.
-  if (name == "$AC_MARKER" || name == "$AC_PARAM") note_external_read(key);
+  const bool sync_action_variable = name == "$AC_MARKER" || name == "$AC_PARAM";
+  if (sync_action_variable) note_external_read(key);
   if (name == "$AC_TIMER") {
     // Job Planning, "Timer variable $AC_TIMER[n]": counts seconds from the value written (>= 0)
     // until -1 stops it. Time is the interpreter's (poll_clock), so a timed warm-up loop ends.
@@ -69,7 +70,7 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   }
   if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
   if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
-  if (name == "$AC_MARKER" || name == "$AC_PARAM") return {Value(0.0), false};  // 0 until written
+  if (sync_action_variable) return {Value(0.0), false};  // 0 until written
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? view_->poll_clock(line_) : 0.0)), false};
