@@ -109,9 +109,9 @@ void ContourCorners::hold(PathElement&& line) {
 }
 
 void ContourCorners::flush() {
-  if (pending_) next_.consume(std::move(*pending_));
+  if (pending_) next_->consume(std::move(*pending_));
   pending_.reset();
-  for (auto& e : between_) next_.consume(std::move(e));
+  for (auto& e : between_) next_->consume(std::move(e));
   between_.clear();
 }
 
@@ -132,14 +132,14 @@ void ContourCorners::consume(PathElement&& element) {
   }
   if (pending_ && !insert_corner(element)) flush();
   if (element.corner.kind == ContourCornerKind::None) {
-    next_.consume(std::move(element));
+    next_->consume(std::move(element));
     return;
   }
   if (!is_straight(element) && !can_round(element)) {
     warn(element, std::string(corner_word(element.corner)) + " at the end of a " + element.label +
                       " block (modelled between straight blocks, and RND next to circles: the corner stays sharp)");
     element.corner = {};
-    next_.consume(std::move(element));
+    next_->consume(std::move(element));
     return;
   }
   hold(std::move(element));
@@ -147,7 +147,7 @@ void ContourCorners::consume(PathElement&& element) {
 
 void ContourCorners::finish() {
   if (pending_) give_up("without a following traversing block", true);
-  next_.finish();
+  next_->finish();
 }
 
 bool ContourCorners::insert_corner(PathElement& b) {
@@ -226,10 +226,10 @@ PathElement ContourCorners::corner_element(PathElement& a, const PathElement& b,
 
 void ContourCorners::hand_on_corner(bool first_left, PathElement&& inserted) {
   // The (cut) first block if anything is left of it, the corner element, what came between.
-  if (first_left) next_.consume(std::move(*pending_));
+  if (first_left) next_->consume(std::move(*pending_));
   pending_.reset();
-  next_.consume(std::move(inserted));
-  for (auto& e : between_) next_.consume(std::move(e));
+  next_->consume(std::move(inserted));
+  for (auto& e : between_) next_->consume(std::move(e));
   between_.clear();
   ++inserted_;
 }

@@ -67,7 +67,7 @@ double corner_size_for_leg(ContourCornerKind kind, double leg_mm, double theta);
 
 class ContourCorners final : public ElementSink {
  public:
-  ContourCorners(ElementSink& next, Diagnostics& diagnostics) : next_(next), diagnostics_(diagnostics) {}
+  ContourCorners(ElementSink& next, Diagnostics& diagnostics) : next_(&next), diagnostics_(diagnostics) {}
 
   // The interpreter starts a block (one without elements still counts as a block between).
   void begin_block() {
@@ -77,6 +77,13 @@ class ContourCorners final : public ElementSink {
   void finish() override;
 
   uint64_t corners_inserted() const { return inserted_; }
+
+  // Hands on the element held for a corner that has not come yet (none will: the stream is
+  // being redirected), then sends what follows to `next` (contour recording, contour_recording.hpp).
+  void redirect(ElementSink& next) {
+    flush();
+    next_ = &next;
+  }
 
  private:
   void hold(PathElement&& line);
@@ -92,7 +99,7 @@ class ContourCorners final : public ElementSink {
   void flush();
   void warn(const PathElement& at, const std::string& what);
 
-  ElementSink& next_;
+  ElementSink* next_;
   Diagnostics& diagnostics_;
   std::optional<PathElement> pending_;  // a straight element whose end gets the corner
   std::vector<PathElement> between_;     // DynamicsChange elements after it

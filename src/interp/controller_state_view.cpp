@@ -163,6 +163,13 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_EP" || n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN") return number(axis_position(indices, true));
   if (n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB") return number(axis_position(indices, false));
   if (n == "$P_F") return Value(s.feed);
+  // drycut's contour recording (contour_recording.hpp): the count and [element, column].
+  if (n == "$DRYCUT_CONTOUR_N") return Value(static_cast<double>(interpreter_.recorded_contour().size()));
+  if (n == "$DRYCUT_CONTOUR" && indices.size() == 2 && indices[0].is_number() && indices[1].is_number() &&
+      indices[0].number >= 0 && indices[0].number == std::trunc(indices[0].number) && indices[1].number >= 0 &&
+      indices[1].number <= 6)
+    return number(interpreter_.recorded_contour().value(static_cast<size_t>(indices[0].number),
+                                                        static_cast<int>(indices[1].number), s.plane_indices()));
   if (n == "$P_S" || n == "$AA_S") return Value(s.spindle_rpm);
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));

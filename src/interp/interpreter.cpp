@@ -22,6 +22,7 @@ using namespace detail;
 Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& sink,
                          Diagnostics& diagnostics, InterpreterOptions options)
     : profile_(profile),
+      downstream_(sink),
       corners_(sink, diagnostics),
       sink_(corners_),
       diagnostics_(diagnostics),
@@ -223,6 +224,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       }
     } else if (n == "SETMS") {
       set_master_spindle(ctx, c);
+    } else if (n == "DRYCUT_CONTOUR_BEGIN" || n == "DRYCUT_CONTOUR_END") {
+      record_contour(ctx, n == "DRYCUT_CONTOUR_BEGIN", c.column);
     } else if (n == "MSG") {
       // A message on the operator screen: nothing to simulate.
     } else if (n == "RET") {

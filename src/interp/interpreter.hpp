@@ -17,6 +17,7 @@
 #include <string>
 
 #include "interp/contour_corners.hpp"
+#include "interp/contour_recording.hpp"
 #include "interp/extra_axes.hpp"
 #include "interp/frame_components.hpp"
 #include "interp/modal_state.hpp"
@@ -84,6 +85,8 @@ class Interpreter {
   double poll_clock(uint64_t line);
   // Channel axes beyond X, Y, Z ($AA_IM[A] reads their positions).
   const ExtraAxes& extra_axes() const { return extra_axes_; }
+  // The contour of the last DRYCUT_CONTOUR_BEGIN ... END ($DRYCUT_CONTOUR, contour_recording.hpp).
+  const ContourRecorder& recorded_contour() const { return recorder_; }
 
  private:
   struct BlockContext;
@@ -240,9 +243,22 @@ class Interpreter {
   // G4 S<rev> / G4 S<n>=<rev>: the dwell in seconds.
   double dwell_in_revolutions(const BlockContext& ctx, const parser::AddressWord& s);
 
+  // DRYCUT_CONTOUR_BEGIN / END (interpreter_contour_recording.cpp).
+  void record_contour(const BlockContext& ctx, bool begin, uint32_t column);
+
   const machine::MachineProfile& profile_;
+  ElementSink& downstream_;  // the stream after the interpreter (compensation, planner)
   ContourCorners corners_;  // every element goes through it (sink_ is this filter)
   ElementSink& sink_;
+  // Contour recording: where corners_ sends the elements between BEGIN and END, and what END
+  // restores (the tool has not moved).
+  ContourRecorder recorder_;
+  struct RecordingStart {
+    Eigen::Vector3d position, length_applied, last_tangent;
+    bool has_last_tangent = false;
+    double nominal_time_s = 0.0;
+  };
+  RecordingStart recording_start_;
   Diagnostics& diagnostics_;
   InterpreterOptions options_;
   ModalState state_;

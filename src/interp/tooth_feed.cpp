@@ -65,7 +65,11 @@ double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::
   ModalState scratch;
   const FeedResult feed = path_feed(feed_state(ctx, scratch), spindle_speed(ctx, &chord), length_mm, chord,
                                      ctx.lead_change_mm);
-  if (feed.alarm != 0) raise(ctx, feed.alarm, feed.detail);
+  if (feed.alarm != 0) {
+    // A recorded contour is not run: it needs no feed, as on the control's contour preparation.
+    if (recorder_.active()) return 1.0;
+    raise(ctx, feed.alarm, feed.detail);
+  }
   if (state_.thread_mode() && length_mm > 0) warn_thread_beyond_axis_velocity(ctx, feed.mm_s, length_mm, chord);
   return feed.mm_s;
 }

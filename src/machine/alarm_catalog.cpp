@@ -45,6 +45,8 @@ constexpr std::array kCatalog{
     AlarmInfo{14130, S::Alarm, "Too many initialization values", A::ThirdParty},
     AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
     AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
+    // Contour preparation started wrongly (CONTPRON; drycut: DRYCUT_CONTOUR_BEGIN/END).
+    AlarmInfo{15800, S::Alarm, "Wrong initial conditions for contour preparation (CONTPRON)", A::Memory},
     AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
     // Rotary axes (Diagnostics Manual; the texts as drycut understands them, docs/axes.md).
     AlarmInfo{16800, S::Alarm, "Traverse instruction DC/CDC not allowed for this axis", A::Memory},

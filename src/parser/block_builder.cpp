@@ -311,6 +311,10 @@ class ProgramLoader::BlockBuilder {
       parameterised_return(item);
       return;
     }
+    if (item.name == "DRYCUT_CONTOUR_CALL") {
+      contour_call(item);
+      return;
+    }
     const Support s = command_support(item.name);
     if (skipped_command(item, s)) return;
     if (s == Support::Modelled) {
@@ -333,6 +337,24 @@ class ProgramLoader::BlockBuilder {
     set_call(item.name, item.column);  // a subprogram with parameters: SUB(1, 2)
     for (uint32_t k = 0; k < item.arg_count; ++k)
       call_args_.push_back(l_.call_argument(l_.parsed_.pool.args[item.arg_first + k]));
+  }
+
+  // DRYCUT_CONTOUR_CALL("NAME" or "START:END"): the contour of drycut's contour cycles runs as a
+  // call, the subprogram NAME or the section between the labels of the program that called the
+  // cycle (CYCLE95's NPP, interp/contour_recording.hpp).
+  void contour_call(const Item& item) {
+    const ExprIndex a = item.arg_count == 1 ? l_.parsed_.pool.args[item.arg_first] : kNoExpr;
+    if (a == kNoExpr) throw LineError(12080, item.column, "DRYCUT_CONTOUR_CALL needs a contour (\"NAME\" or \"START:END\")");
+    std::string spec(trimmed(as_text(l_.eval_value(a))));
+    for (char& c : spec) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const size_t colon = spec.find(':');
+    if (spec.empty() || colon == 0 || colon + 1 == spec.size())
+      throw LineError(12080, item.column, "DRYCUT_CONTOUR_CALL: no contour in \"" + spec + "\"");
+    set_call(spec, item.column);
+    if (colon != std::string::npos) {
+      section_start_ = trimmed(std::string_view(spec).substr(0, colon));
+      section_end_ = trimmed(std::string_view(spec).substr(colon + 1));
+    }
   }
 
   // SETAL(n[, "text"]): a cycle or user alarm. 62000..62999 are display alarms: shown, and the
@@ -503,6 +525,8 @@ class ProgramLoader::BlockBuilder {
       l_.pending_passes_ = passes_;
       l_.pending_column_ = call_column_;
       l_.pending_args_ = std::move(call_args_);
+      l_.pending_section_start_ = std::move(section_start_);
+      l_.pending_section_end_ = std::move(section_end_);
     }
     if (action_ != PendingAction::None) {
       if (l_.pending_ == PendingAction::Call) throw LineError(12080, call_column_, "program call and program end in one block");
@@ -532,6 +556,7 @@ class ProgramLoader::BlockBuilder {
   Block& out_;
   Frame& f_;
   std::string call_name_;
+  std::string section_start_, section_end_;  // DRYCUT_CONTOUR_CALL("START:END")
   uint32_t call_column_ = 0;
   uint64_t passes_ = 1;
   bool mcall_ = false;

@@ -28,6 +28,10 @@ constexpr std::array kCommands{
     CommandEntry{"POLY", M},    CommandEntry{"POLYPATH", N},  // which axis groups POLY bends: not modelled
     CommandEntry{"COMPON", M},  CommandEntry{"COMPCURV", M}, CommandEntry{"COMPCAD", M},
     CommandEntry{"COMPOF", M},
+    // drycut's own, for its contour cycles (interp/contour_recording.hpp; the control's cycles
+    // use CONTPRON/EXECUTE): record the contour of the blocks between, run a contour by name.
+    CommandEntry{"DRYCUT_CONTOUR_BEGIN", M}, CommandEntry{"DRYCUT_CONTOUR_END", M},
+    CommandEntry{"DRYCUT_CONTOUR_CALL", M},
     // Valid on the control, not modelled by drycut.
     CommandEntry{"TRAORI", N},  CommandEntry{"TRACYL", N},
     // TRAFOOF ends a transformation: drycut models none (each is warned where it is selected),

@@ -136,7 +136,10 @@ bool ProgramLoader::next(Block& out) {
       case PendingAction::None: break;
       case PendingAction::Call:
         pending_ = PendingAction::None;
-        call_program(pending_call_, pending_passes_, pending_column_);
+        if (!pending_section_start_.empty())
+          call_caller_section(std::exchange(pending_section_start_, {}), std::exchange(pending_section_end_, {}), pending_column_);
+        else
+          call_program(pending_call_, pending_passes_, pending_column_);
         break;
       case PendingAction::Return:
         pending_ = PendingAction::None;
@@ -308,6 +311,21 @@ bool ProgramLoader::call_archived_program(const ProgramName& name, uint64_t pass
   frame->file = a.file;
   push_called_frame(std::move(frame), name.name, passes);
   return true;
+}
+
+void ProgramLoader::call_caller_section(const std::string& start_label, const std::string& end_label, uint32_t column) {
+  if (static_cast<int>(frames_.size()) > kMaxProgramLevel) raise(990003, "calling " + start_label, column);
+  // The caller's file read again from its start (in an archive file: its section), as
+  // CALL "PROG" BLOCK start TO end reads PROG.
+  const Frame& caller = *frames_[frames_.size() >= 2 ? frames_.size() - 2 : 0];
+  auto frame = std::make_unique<Frame>();
+  if (!frame->reader.open(*caller.file)) raise(990005, *caller.file, column);
+  frame->reader.seek(caller.start);
+  frame->start = caller.start;
+  frame->file = caller.file;
+  const std::string program = caller.program;
+  push_called_frame(std::move(frame), program, 1);
+  run_program_section(start_label, end_label, column);
 }
 
 void ProgramLoader::push_called_frame(std::unique_ptr<Frame> frame, const std::string& program, uint64_t passes) {

@@ -25,7 +25,7 @@ SystemVariableClass classify_system_variable(std::string_view n) {
     if (n == p) return SystemVariableClass::InputOutput;
   if (starts_with(n, "$TC_")) return SystemVariableClass::ToolData;
   if (starts_with(n, "$P_") || starts_with(n, "$AA_") || starts_with(n, "$AC_") || starts_with(n, "$VA_") ||
-      starts_with(n, "$A_") || starts_with(n, "$PI") || starts_with(n, "$R"))
+      starts_with(n, "$A_") || starts_with(n, "$PI") || starts_with(n, "$R") || starts_with(n, "$DRYCUT_"))
     return SystemVariableClass::State;
   return SystemVariableClass::Unknown;
 }
