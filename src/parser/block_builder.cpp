@@ -357,8 +357,9 @@ class ProgramLoader::BlockBuilder {
     }
   }
 
-  // SETAL(n[, "text"]): a cycle or user alarm. 62000..62999 are display alarms: shown, and the
-  // program goes on (a warning here); the others stop the program (Cycles manual, "Alarms").
+  // SETAL(n[, "text"]): a cycle or user alarm. 62000..62999 (Siemens cycles) and 67000..67999
+  // (user cycles, their counterpart) are display alarms: shown, and the program goes on (a
+  // warning here); the others stop the program (Cycles manual, "Alarms"; docs/language-rules.md).
   void set_alarm(const Item& item) {
     if (item.arg_count < 1) throw LineError(12080, item.column, "SETAL needs an alarm number");
     const double n = l_.eval(l_.parsed_.pool.args[item.arg_first]);
@@ -369,7 +370,7 @@ class ProgramLoader::BlockBuilder {
       const ExprIndex t = l_.parsed_.pool.args[item.arg_first + 1];
       if (t != kNoExpr) text = as_text(l_.eval_value(t));
     }
-    if (n >= 62000 && n <= 62999) {
+    if ((n >= 62000 && n <= 62999) || (n >= 67000 && n <= 67999)) {
       l_.warn(static_cast<int>(n), text, item.column);
       return;
     }

@@ -63,7 +63,7 @@ constexpr std::array kStatements{
     Row{"CALL BLOCK start TO end", M, "the program section between the labels runs once (as REPEAT start end)"},
     Row{"CALL \"PROG\" BLOCK start TO end", M, "that section of program PROG runs, then the call returns"},
     Row{"REDEF name attributes", M, "new access rights, preprocessing stop, initialisation or limits of a name (definition files): accepted, nothing changes"},
-    Row{"SETAL(n[, text])", M, "cycle/user alarm: 60000-61999 and 63000-69999 stop the program, 62000-62999 only display (warning)"},
+    Row{"SETAL(n[, text])", M, "cycle/user alarm: 62000-62999 and 67000-67999 only display (warning), the rest of 60000-69999 stop the program"},
     Row{"MSG(text)", M, "message (composed with <<)"},
     Row{"STOPRE", M, "preprocessing stop"},
     Row{"ID=n WHEN/WHENEVER/FROM/EVERY ... DO ...", N, "synchronized actions: accepted, not simulated"},

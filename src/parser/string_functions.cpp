@@ -121,22 +121,31 @@ std::string sprint(std::span<const Value> args, uint32_t column) {
     if (i >= format.size()) break;
     const size_t field_start = out.size();
     int decimals = 6;
+    bool precision = false;  // %.3S takes 3 characters of the string
     if (format[i] == '.') {  // %.3F
+      precision = true;
       decimals = 0;
       while (i + 1 < format.size() && format[i + 1] >= '0' && format[i + 1] <= '9')
-        decimals = std::min(decimals * 10 + (format[++i] - '0'), 20);  // no int overflow
+        decimals = std::min(decimals * 10 + (format[++i] - '0'), 200);  // no int overflow
       ++i;
       if (i >= format.size()) break;
     }
+    const int digits = std::min(decimals, 20);  // of a number (a string may take up to 200 characters)
     switch (format[i] & ~0x20) {  // upper case
       case 'D':
       case 'I': std::snprintf(buf, sizeof buf, "%lld", static_cast<long long>(std::llround(as_number(take(), column)))); out += buf; break;
-      case 'F': std::snprintf(buf, sizeof buf, "%.*f", decimals, as_number(take(), column)); out += buf; break;
-      case 'E': std::snprintf(buf, sizeof buf, "%.*E", decimals, as_number(take(), column)); out += buf; break;
+      case 'F': std::snprintf(buf, sizeof buf, "%.*f", digits, as_number(take(), column)); out += buf; break;
+      case 'E': std::snprintf(buf, sizeof buf, "%.*E", digits, as_number(take(), column)); out += buf; break;
+      // %.nG: decimal or exponential by the value's range, n significant digits (as C's %G).
+      case 'G': std::snprintf(buf, sizeof buf, "%.*G", digits, as_number(take(), column)); out += buf; break;
       case 'X': std::snprintf(buf, sizeof buf, "%llX", static_cast<unsigned long long>(std::llround(as_number(take(), column)))); out += buf; break;
       case 'B': out += as_number(take(), column) != 0.0 ? "TRUE" : "FALSE"; break;
       case 'C': out += char_of_code(as_number(take(), column), column); break;
-      case 'S': out += as_text(take()); break;
+      case 'S': {
+        const std::string text = as_text(take());
+        out += precision ? text.substr(0, static_cast<size_t>(decimals)) : text;
+        break;
+      }
       default:
         if (format[i] == '%') out += '%';
         else throw LineError(12150, column, std::string("SPRINT: unknown format %") + format[i]);
