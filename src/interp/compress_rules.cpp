@@ -6,18 +6,6 @@
 namespace drycut::interp {
 namespace detail {
 
-namespace {
-
-// A2/B2/C2 (orientation angles), A3/B3/C3 (direction vector), A4..C5 (surface normals): the tool
-// orientation a 5-axis post writes in every block under TRAORI (Job Planning, "Compression of the
-// orientation": such blocks are compressed too). drycut does not model orientation; the words
-// do not stop a run.
-bool is_orientation_word(std::string_view n) {
-  return n.size() == 2 && (n[0] == 'A' || n[0] == 'B' || n[0] == 'C') && n[1] >= '2' && n[1] <= '5';
-}
-
-}  // namespace
-
 bool is_simple_block(const parser::Block& block, const ExtraAxes& extra_axes) {
   if (!block.m.empty() || !block.commands.empty() || !block.system_writes.empty() ||
       !block.axis_words.empty() || block.tool_name || block.modal_save != parser::ModalSave::None)

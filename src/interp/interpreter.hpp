@@ -208,6 +208,7 @@ class Interpreter {
   PolarWords polar_words(const BlockContext& ctx) const;
   void select_settable_frame(const BlockContext& ctx, int code, uint32_t column);
   void apply_frame_instruction(const BlockContext& ctx);
+  void warn_frame_of_extra_axis(const BlockContext& ctx, const parser::AddressWord& a);  // TRANS C30, G58 A10
   void apply_axial_offset(const BlockContext& ctx);  // G58/G59
   void define_pole(const BlockContext& ctx);
   bool frame_mirrors_plane(const Frame& frame) const;

@@ -45,6 +45,11 @@ bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) 
     warn_once(ctx, "axis " + a.name + " is not in the machine profile (its moves are not simulated)", a.column);
     return true;
   }
+  if (is_orientation_word(a.name)) {
+    // A block that only turns the tool takes time on the machine and none here.
+    warn_once(ctx, "tool orientation A2/B2/C2, A3/B3/C3, A4..C5 (the rotary axes' moves for it are not simulated)", a.column);
+    return true;
+  }
   return false;
 }
 

@@ -43,6 +43,14 @@ inline bool is_axis_letter_name(std::string_view n) {
   return n.size() == 1 && std::string_view("ABCUVW").find(n[0]) != std::string_view::npos;
 }
 
+// A2/B2/C2 (orientation angles), A3/B3/C3 (direction vector), A4..C5 (surface normals): the tool
+// orientation a 5-axis post writes in every block under TRAORI (Job Planning, "Three, four and
+// five axis transformation"). drycut does not model orientation: warned, never an alarm; the
+// compressor still joins such blocks (Job Planning, "Compression of the orientation").
+inline bool is_orientation_word(std::string_view n) {
+  return n.size() == 2 && (n[0] == 'A' || n[0] == 'B' || n[0] == 'C') && n[1] >= '2' && n[1] <= '5';
+}
+
 // A spindle as an axis, SP<n> (what SPI(n) gives: FA[SPI(1)], ACC[SPI(1)]).
 inline bool is_spindle_axis_name(std::string_view n) {
   return n.size() > 2 && n.substr(0, 2) == "SP" &&

@@ -101,6 +101,8 @@ void Interpreter::apply_frame_instruction(const BlockContext& ctx) {
       words.axes[static_cast<size_t>(i)] = kind == FrameInstruction::Trans ? a.value * unit : a.value;
     } else if (a.name == "RPL") {
       words.rpl = a.value;
+    } else if (extra_axes_.index(a.name) >= 0 || is_axis_letter_name(a.name)) {
+      warn_frame_of_extra_axis(ctx, a);
     }
   }
   const Frame component = instruction_frame(kind, words, state_.plane_normal_axis());
@@ -111,13 +113,24 @@ void Interpreter::apply_frame_instruction(const BlockContext& ctx) {
   state_.frames.program(component, ctx.additive_frame);
 }
 
+void Interpreter::warn_frame_of_extra_axis(const BlockContext& ctx, const AddressWord& a) {
+  // Frames hold X, Y, Z here; the control's frame has a component for every channel axis
+  // (docs/axes.md): the rotary or extra axis then runs on its programmed values, unshifted.
+  warn_once(ctx, "frame component of axis " + a.name + " (offsets, rotations and scales of axes beyond X/Y/Z are not modelled: " +
+                     a.name + " runs without it)",
+            a.column);
+}
+
 void Interpreter::apply_axial_offset(const BlockContext& ctx) {
   // G58 X.. / G59 X..: the axis words are offsets, not a target (frame_chain.hpp).
   const double unit = state_.inch ? kMmPerInch : 1.0;
   const bool additive = ctx.axial_offset == 59;
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = axis_index(a.name);
-    if (i < 0) continue;
+    if (i < 0) {
+      if (extra_axes_.index(a.name) >= 0 || is_axis_letter_name(a.name)) warn_frame_of_extra_axis(ctx, a);
+      continue;
+    }
     if (!state_.frames.axial_offset(i, a.value * unit, additive))
       warn_once(ctx, std::string(additive ? "G59" : "G58") +
                          " with a programmable frame that rotates, scales or mirrors (offset not applied)",

@@ -379,5 +379,28 @@ TEST(Frames, ArcInATiltedPlaneFollowsTheFrame) {
   EXPECT_TRUE(near(m[2].curve->end(), Vector3d(10, 0, 0)));
 }
 
+TEST(Frames, FrameWordOfAnAxisBeyondXyzIsWarnedAndTheRestApplies) {
+  // TRANS X10 C30: X is shifted by 10 (G54 X10 of the test profile: machine X = 10 + 10 + 5 for
+  // the programmed X5); the C component is not modelled and must say so (990002 naming C).
+  auto r = run_program("G54 G0 X0 Y0 Z0\nTRANS X10 C30\nG0 X5\nG58 A10\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  EXPECT_NEAR(r->end_position.x(), 25.0, 1e-9);
+  int frame_warnings = 0;
+  for (const auto& w : r->diagnostics.items())
+    if (w.number == 990002 && w.text.find("frame component of axis") != std::string::npos) ++frame_warnings;
+  EXPECT_EQ(frame_warnings, 2);  // C of TRANS, A of G58
+}
+
+TEST(Frames, OrientationWordsAreWarnedOnce) {
+  // A3/B3/C3 (direction vector), A2 (angle): the block's X/Y/Z still move; the words are named once.
+  auto r = run_program("G0 X0 Y0 Z0\nG1 X10 A3=1 B3=0 C3=1 F1000\nG1 X20 A2=5\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  EXPECT_NEAR(r->end_position.x(), 20.0, 1e-9);  // G500 at reset: no offset
+  int orientation_warnings = 0;
+  for (const auto& w : r->diagnostics.items())
+    if (w.number == 990002 && w.text.find("tool orientation") != std::string::npos) ++orientation_warnings;
+  EXPECT_EQ(orientation_warnings, 1);
+}
+
 }  // namespace
 }  // namespace drycut::interp::testing
