@@ -9,11 +9,13 @@
 // layout is not reproduced (docs/cycles.md, "Contour cycles").
 //
 // WHAT HAPPENS
-//   BEGIN: the elements the interpreter makes from here on (lines, circles, the chamfers and
+//   BEGIN: the elements the interpreter makes from this block on (lines, circles, the chamfers and
 //   roundings of RND/CHF, after the frames and the tool length) go to the recorder instead of
 //   the planner. The blocks run as usual otherwise: modal state, variables, warnings.
-//   END: the recorder stops; the position, the tool length applied, the path tangent and the
-//   clock go back to what they were at BEGIN: the tool has not moved and no time has passed.
+//   END: the recorder stops; the position, the tool length applied, the path tangent, the clock,
+//   the dynamics mode, the tool, the further axes and what a block leaves open for the next go
+//   back to what they were at BEGIN (Interpreter::stop_recording): the tool has not moved and no
+//   time has passed. Modal G functions are left to the cycle (its SAVE restores them).
 //   Each element is kept in the workpiece system (the inverse of the frames and the tool length
 //   in force when it was made), in program units, plane ordinates as radius (not diameter).
 //   $DRYCUT_CONTOUR[i, k], in the working plane active when it is read (G18: abscissa Z,

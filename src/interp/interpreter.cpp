@@ -813,6 +813,8 @@ void Interpreter::emit_block_end(BlockContext& ctx) {
     PathElement e = element_template(ctx, ElementKind::Stop);
     e.stop = *ctx.stop;
     e.label = *ctx.stop == StopKind::ProgramStop ? "M0" : *ctx.stop == StopKind::OptionalStop ? "M1" : "M30";
+    if (*ctx.stop == StopKind::ProgramEnd && recorder_.active())
+      raise(ctx, 15800, "program end while a contour is being recorded (DRYCUT_CONTOUR_END missing)");
     emit(std::move(e));
     if (*ctx.stop == StopKind::ProgramEnd) ended_ = true;
   }
@@ -820,6 +822,8 @@ void Interpreter::emit_block_end(BlockContext& ctx) {
 
 void Interpreter::finish() {
   if (spline_.active()) end_spline_run(nullptr);
+  // A run stopped by an alarm inside a recorded contour: what came before goes on downstream.
+  stop_recording();
   if (clock_wait_s_ > 0 && !ended_) {  // the program ran out while waiting for the clock
     const parser::Block none;
     emit_clock_wait(BlockContext(none));

@@ -254,12 +254,23 @@ class Interpreter {
   // Contour recording: where corners_ sends the elements between BEGIN and END, and what END
   // restores (the tool has not moved).
   ContourRecorder recorder_;
+  // What the blocks of a recorded contour may change and END puts back (the tool has not moved,
+  // no time has passed, no tool was changed, nothing is left open for the next real block).
   struct RecordingStart {
     Eigen::Vector3d position, length_applied, last_tangent;
     bool has_last_tangent = false;
     double nominal_time_s = 0.0;
+    DynamicsMode last_dynamics;
+    std::optional<double> held_angle_deg;
+    CornerWords held_corner;
+    std::optional<MotionMode> thread_chain;
+    bool block_between_compressible = true;
+    bool compensation_selection_pending = false;
+    ToolState tools;
+    ExtraAxes extra_axes;
   };
-  RecordingStart recording_start_;
+  std::optional<RecordingStart> recording_start_;
+  void stop_recording();  // back to the real stream, the state as at BEGIN
   Diagnostics& diagnostics_;
   InterpreterOptions options_;
   ModalState state_;

@@ -16,20 +16,39 @@ void Interpreter::record_contour(const BlockContext& ctx, bool begin, uint32_t c
   // A spline run still open belongs to the side of the switch it was programmed on.
   if (spline_.active()) end_spline_run(nullptr);
   if (begin) {
-    recording_start_ = {position_, length_applied_, last_tangent_, has_last_tangent_, nominal_time_s_};
+    recording_start_ = RecordingStart{position_,     length_applied_, last_tangent_,
+                                      has_last_tangent_, nominal_time_s_, last_dynamics_,
+                                      held_angle_deg_, held_corner_,    thread_chain_,
+                                      block_between_compressible_,      compensation_selection_pending_,
+                                      tools_,        extra_axes_};
     recorder_.start([this](const geometry::Vec3& machine) {
       return geometry::Vec3(state_.frames.total(false).to_inner(machine - length_applied_) / geometry_unit());
     });
     corners_.redirect(recorder_);
     return;
   }
+  stop_recording();
+}
+
+void Interpreter::stop_recording() {
+  if (!recorder_.active()) return;
   corners_.redirect(downstream_);
   recorder_.stop();
-  position_ = recording_start_.position;
-  length_applied_ = recording_start_.length_applied;
-  last_tangent_ = recording_start_.last_tangent;
-  has_last_tangent_ = recording_start_.has_last_tangent;
-  nominal_time_s_ = recording_start_.nominal_time_s;
+  RecordingStart& r = *recording_start_;
+  position_ = r.position;
+  length_applied_ = r.length_applied;
+  last_tangent_ = r.last_tangent;
+  has_last_tangent_ = r.has_last_tangent;
+  nominal_time_s_ = r.nominal_time_s;
+  last_dynamics_ = r.last_dynamics;  // the next real motion reports its dynamics downstream again
+  held_angle_deg_ = r.held_angle_deg;
+  held_corner_ = r.held_corner;
+  thread_chain_ = r.thread_chain;
+  block_between_compressible_ = r.block_between_compressible;
+  compensation_selection_pending_ = r.compensation_selection_pending;
+  tools_ = std::move(r.tools);
+  extra_axes_ = std::move(r.extra_axes);
+  recording_start_.reset();
 }
 
 }  // namespace drycut::interp

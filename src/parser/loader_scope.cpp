@@ -146,6 +146,9 @@ std::optional<Value> ProgramLoader::program_variable(std::string_view name, std:
     const bool given = n >= 1 && n <= static_cast<double>(f.args.size()) && f.args[static_cast<size_t>(n) - 1].given;
     return Value(given ? 1.0 : 0.0);
   }
+  // $P_STACK: the program level of the block being prepared, 0 in the main program (Job
+  // Planning, system variables "$P_STACK"); a cycle tests it to know whether it was called.
+  if (name == "$P_STACK") return Value(static_cast<double>(frames_.size()) - 1);
   // $P_PROG / $P_PROGPATH: the running program's name and its path in the control's notation
   // (/_N_MPF_DIR/_N_NAME_MPF; subprograms in _N_SPF_DIR), drycut's rendering of a file it
   // read from a folder (inferred).

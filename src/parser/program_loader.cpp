@@ -137,7 +137,8 @@ bool ProgramLoader::next(Block& out) {
       case PendingAction::Call:
         pending_ = PendingAction::None;
         if (!pending_section_start_.empty())
-          call_caller_section(std::exchange(pending_section_start_, {}), std::exchange(pending_section_end_, {}), pending_column_);
+          call_caller_section(std::exchange(pending_section_start_, {}), std::exchange(pending_section_end_, {}),
+                              pending_column_);
         else
           call_program(pending_call_, pending_passes_, pending_column_);
         break;
@@ -325,7 +326,12 @@ void ProgramLoader::call_caller_section(const std::string& start_label, const st
   frame->file = caller.file;
   const std::string program = caller.program;
   push_called_frame(std::move(frame), program, 1);
-  run_program_section(start_label, end_label, column);
+  try {
+    run_program_section(start_label, end_label, column);
+  } catch (const LineError& e) {  // a label not found: 14080 at the calling block
+    frames_.pop_back();
+    raise(e.number(), e.detail(), e.column());
+  }
 }
 
 void ProgramLoader::push_called_frame(std::unique_ptr<Frame> frame, const std::string& program, uint64_t passes) {
