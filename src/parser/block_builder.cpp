@@ -315,6 +315,10 @@ class ProgramLoader::BlockBuilder {
       contour_call(item);
       return;
     }
+    if (item.name == "GETSELT" || item.name == "GETEXET") {
+      tool_query(item);
+      return;
+    }
     const Support s = command_support(item.name);
     if (skipped_command(item, s)) return;
     if (s == Support::Modelled) {
@@ -355,6 +359,22 @@ class ProgramLoader::BlockBuilder {
       section_start_ = trimmed(std::string_view(spec).substr(0, colon));
       section_end_ = trimmed(std::string_view(spec).substr(colon + 1));
     }
+  }
+
+  // GETSELT(VAR INT t[, spindle]) / GETEXET(VAR INT t[, spindle]): the T number of the tool
+  // selected (the last T, which M6 will load) / of the tool in the spindle (Job Planning, tool
+  // management "GETSELT", "GETEXET"), written into the variable or R parameter given. The spindle
+  // is the master spindle's whatever is written (drycut has one tool carrier).
+  void tool_query(const Item& item) {
+    const ExprIndex a = item.arg_count >= 1 ? l_.parsed_.pool.args[item.arg_first] : kNoExpr;
+    if (a == kNoExpr) throw LineError(12080, item.column, std::string(item.name) + " needs a variable for the T number");
+    const CallArgument target = l_.call_argument(a);
+    if (!target.r_parameter && (!target.variable || target.element == SIZE_MAX))
+      throw LineError(12150, item.column, std::string(item.name) + ": the T number needs a variable, not a value");
+    const auto r = l_.system_variables_.read(item.name == "GETSELT" ? "$P_TOOLP" : "$P_TOOLNO", {});
+    const double t = r.value.is_number() ? r.value.number : 0.0;
+    if (target.r_parameter) *target.r_parameter = t;
+    else target.variable->set(target.element, Value(t), item.column);
   }
 
   // SETAL(n[, "text"]): a cycle or user alarm. 62000..62999 (Siemens cycles) and 67000..67999

@@ -108,7 +108,7 @@ constexpr std::array kCommands{
     // Predefined procedures of tool management, synchronized actions, files and axis dynamics
     // (Job Planning; Function Manual Tool Management): valid calls, no path of their own.
     CommandEntry{"SETPIECE", N}, CommandEntry{"GETACTT", N}, CommandEntry{"NEWT", N},
-    CommandEntry{"DELT", N},    CommandEntry{"GETSELT", N}, CommandEntry{"GETEXET", N},
+    CommandEntry{"DELT", N},    CommandEntry{"GETSELT", M}, CommandEntry{"GETEXET", M},
     CommandEntry{"TCA", N},     CommandEntry{"POSM", N},    CommandEntry{"RESETMON", N},
     CommandEntry{"SETMTH", N},  CommandEntry{"CANCEL", N},  CommandEntry{"LOCK", N},
     CommandEntry{"UNLOCK", N},  CommandEntry{"RESET", N},   CommandEntry{"NEWCONF", N},
