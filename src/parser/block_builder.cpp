@@ -343,21 +343,29 @@ class ProgramLoader::BlockBuilder {
       call_args_.push_back(l_.call_argument(l_.parsed_.pool.args[item.arg_first + k]));
   }
 
-  // DRYCUT_CONTOUR_CALL("NAME" or "START:END"): the contour of drycut's contour cycles runs as a
-  // call, the subprogram NAME or the section between the labels of the program that called the
-  // cycle (CYCLE95's NPP, interp/contour_recording.hpp).
+  // DRYCUT_CONTOUR_CALL("NAME", "START:END" or "PROG:START:END"): the contour of drycut's contour
+  // cycles runs as a call: the subprogram NAME, the section between the labels of the program
+  // that called the cycle, or that section of program PROG (CYCLE95's NPP, CYCLE62's contour;
+  // interp/contour_recording.hpp).
   void contour_call(const Item& item) {
     const ExprIndex a = item.arg_count == 1 ? l_.parsed_.pool.args[item.arg_first] : kNoExpr;
     if (a == kNoExpr) throw LineError(12080, item.column, "DRYCUT_CONTOUR_CALL needs a contour (\"NAME\" or \"START:END\")");
     std::string spec(trimmed(as_text(l_.eval_value(a))));
     for (char& c : spec) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    const size_t colon = spec.find(':');
-    if (spec.empty() || colon == 0 || colon + 1 == spec.size())
+    std::vector<std::string> parts;
+    for (size_t from = 0;;) {
+      const size_t colon = spec.find(':', from);
+      parts.emplace_back(trimmed(std::string_view(spec).substr(from, colon == std::string::npos ? colon : colon - from)));
+      if (colon == std::string::npos) break;
+      from = colon + 1;
+    }
+    if (parts.size() > 3 || std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); }))
       throw LineError(12080, item.column, "DRYCUT_CONTOUR_CALL: no contour in \"" + spec + "\"");
-    set_call(spec, item.column);
-    if (colon != std::string::npos) {
-      section_start_ = trimmed(std::string_view(spec).substr(0, colon));
-      section_end_ = trimmed(std::string_view(spec).substr(colon + 1));
+    set_call(parts.size() == 1 ? parts[0] : spec, item.column);
+    if (parts.size() == 3) section_program_ = parts[0];
+    if (parts.size() >= 2) {
+      section_start_ = parts[parts.size() - 2];
+      section_end_ = parts.back();
     }
   }
 
@@ -546,6 +554,7 @@ class ProgramLoader::BlockBuilder {
       l_.pending_passes_ = passes_;
       l_.pending_column_ = call_column_;
       l_.pending_args_ = std::move(call_args_);
+      l_.pending_section_program_ = std::move(section_program_);
       l_.pending_section_start_ = std::move(section_start_);
       l_.pending_section_end_ = std::move(section_end_);
     }
@@ -577,7 +586,7 @@ class ProgramLoader::BlockBuilder {
   Block& out_;
   Frame& f_;
   std::string call_name_;
-  std::string section_start_, section_end_;  // DRYCUT_CONTOUR_CALL("START:END")
+  std::string section_program_, section_start_, section_end_;  // DRYCUT_CONTOUR_CALL("PROG:START:END")
   uint32_t call_column_ = 0;
   uint64_t passes_ = 1;
   bool mcall_ = false;

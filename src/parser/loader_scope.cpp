@@ -152,6 +152,13 @@ std::optional<Value> ProgramLoader::program_variable(std::string_view name, std:
   // $P_PROG / $P_PROGPATH: the running program's name and its path in the control's notation
   // (/_N_MPF_DIR/_N_NAME_MPF; subprograms in _N_SPF_DIR), drycut's rendering of a file it
   // read from a folder (inferred).
+  // $P_PROG[n]: the name of the program running at level n (0 the main program).
+  if (name == "$P_PROG" && indices.size() == 1 && indices[0].is_number()) {
+    const double n = indices[0].number;
+    if (n >= 0 && n < static_cast<double>(frames_.size()) && n == std::trunc(n))
+      return Value::of_text(frames_[static_cast<size_t>(n)]->program);
+    throw LineError(17020, 0, "$P_PROG[" + as_text(indices[0]) + "]: no program at that level");
+  }
   if (name == "$P_PROG" || name == "$P_PROGPATH") {
     const bool main = frames_.size() == 1;
     const char* type = main ? "MPF" : "SPF";

@@ -137,8 +137,8 @@ bool ProgramLoader::next(Block& out) {
       case PendingAction::Call:
         pending_ = PendingAction::None;
         if (!pending_section_start_.empty())
-          call_caller_section(std::exchange(pending_section_start_, {}), std::exchange(pending_section_end_, {}),
-                              pending_column_);
+          call_contour_section(std::exchange(pending_section_program_, {}), std::exchange(pending_section_start_, {}),
+                               std::exchange(pending_section_end_, {}), pending_column_);
         else
           call_program(pending_call_, pending_passes_, pending_column_);
         break;
@@ -314,18 +314,31 @@ bool ProgramLoader::call_archived_program(const ProgramName& name, uint64_t pass
   return true;
 }
 
-void ProgramLoader::call_caller_section(const std::string& start_label, const std::string& end_label, uint32_t column) {
+void ProgramLoader::call_contour_section(const std::string& program, const std::string& start_label,
+                                         const std::string& end_label, uint32_t column) {
   if (static_cast<int>(frames_.size()) > kMaxProgramLevel) raise(990003, "calling " + start_label, column);
-  // The caller's file read again from its start (in an archive file: its section), as
-  // CALL "PROG" BLOCK start TO end reads PROG.
-  const Frame& caller = *frames_[frames_.size() >= 2 ? frames_.size() - 2 : 0];
-  auto frame = std::make_unique<Frame>();
-  if (!frame->reader.open(*caller.file)) raise(990005, *caller.file, column);
-  frame->reader.seek(caller.start);
-  frame->start = caller.start;
-  frame->file = caller.file;
-  const std::string program = caller.program;
-  push_called_frame(std::move(frame), program, 1);
+  // A program already running (the caller, or PROG further out) is read again from its start
+  // (in an archive file: its section), as CALL "PROG" BLOCK start TO end reads PROG; another PROG
+  // is called by name.
+  const Frame* source = frames_.size() >= 2 ? frames_[frames_.size() - 2].get() : frames_.front().get();
+  if (!program.empty()) {
+    source = nullptr;
+    for (auto f = frames_.rbegin(); f != frames_.rend() && !source; ++f)
+      if ((*f)->program == program) source = f->get();
+  }
+  if (source) {
+    auto frame = std::make_unique<Frame>();
+    if (!frame->reader.open(*source->file)) raise(990005, *source->file, column);
+    frame->reader.seek(source->start);
+    frame->start = source->start;
+    frame->file = source->file;
+    const std::string name = source->program;
+    push_called_frame(std::move(frame), name, 1);
+  } else {
+    const size_t levels = frames_.size();
+    call_program(program, 1, column);
+    if (frames_.size() == levels) return;  // not found, and only warned (--missing-programs warn)
+  }
   try {
     run_program_section(start_label, end_label, column);
   } catch (const LineError& e) {  // a label not found: 14080 at the calling block

@@ -152,8 +152,10 @@ class ProgramLoader {
   void execute_case();
   void execute_repeat_section();
   void run_program_section(const std::string& start_label, const std::string& end_label, uint32_t column);
-  // The section START:END of the program that called the running one (a contour cycle's contour).
-  void call_caller_section(const std::string& start_label, const std::string& end_label, uint32_t column);
+  // The section START:END of `program`, or (empty) of the program that called the running one:
+  // a contour cycle's contour.
+  void call_contour_section(const std::string& program, const std::string& start_label, const std::string& end_label,
+                            uint32_t column);
   bool end_of_repeat_section(Frame& f);
   // At every backward jump: alarm 990004 when the loader is back in a state it had here.
   // After a backward jump: raises 990004 when the loader is back in a state it had (an endless
@@ -205,8 +207,8 @@ class ProgramLoader {
   PendingAction pending_ = PendingAction::None;
   ModalSave pending_save_ = ModalSave::None;  // told to the interpreter with the next block
   std::string pending_call_;
-  // DRYCUT_CONTOUR_CALL("START:END"): the section of the cycle's caller to run instead.
-  std::string pending_section_start_, pending_section_end_;
+  // DRYCUT_CONTOUR_CALL("[PROG:]START:END"): the section to run instead (no PROG: of the caller).
+  std::string pending_section_program_, pending_section_start_, pending_section_end_;
   uint64_t pending_passes_ = 1;
   uint32_t pending_column_ = 0;
   std::vector<CallArgument> pending_args_;
