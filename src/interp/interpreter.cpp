@@ -248,18 +248,7 @@ void Interpreter::apply_commands(BlockContext& ctx) {
 }
 
 void Interpreter::apply_addresses(BlockContext& ctx) {
-  // MD22550 = 1: the M function of MD22560 changes the tool; its address extension is a
-  // spindle number, and only the master spindle (1) changes tools here (W1 2.2.5).
-  if (tools_.change_on_m_code()) {
-    for (const auto& m : ctx.block.m) {
-      if (m.code != tools_.change_m_code()) continue;
-      if (m.extension > 1)
-        warn_once(ctx, "M" + std::to_string(m.extension) + "=" + std::to_string(m.code) +
-                           ": tool change on another spindle than the master spindle 1", m.column);
-      else
-        ctx.tool_change = true;
-    }
-  }
+  note_tool_change_m_words(ctx);
   // T="name" is not an address word: program it before the words so that a D in the same block
   // (`T="BALL_R3" D1`, as posts write it) belongs to the prepared tool, as with `T1 D1`.
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
@@ -268,21 +257,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     if (apply_smoothing_address(ctx, a)) continue;
     if (apply_corner_address(ctx, a)) continue;
     if (n == "F") {
-      if (ctx.dwell) continue;  // G4 F<s>: dwell time, modal feed unchanged
-      // F has a resolution of 0.001: a smaller value is zero on the control (and would make
-      // absurd times here).
-      if (state_.motion == MotionMode::ThreadIncreasing || state_.motion == MotionMode::ThreadDecreasing) {
-        // G34/G35: F is the lead change per revolution (0: constant lead).
-        if (!(a.value >= 0)) raise(ctx, 12160, "the lead change F must be >= 0", a.column);
-        ctx.lead_change_mm = a.value * geometry_unit();
-        continue;
-      }
-      if (a.value < kMinFeed) raise(ctx, 14800, "F" + std::to_string(a.value), a.column);
-      state_.feed = a.value;
-      state_.feed_type_changed = false;
-      state_.feed_unit_mm = feed_unit();  // kept with F: a later G70/G71 does not convert it again
-      ctx.block_feed = a.value;
-      apply_f_after_tooth_feed(ctx, a);
+      apply_feed_address(ctx, a);
     } else if (n == "FZ") {
       apply_tooth_feed(ctx, a);
     } else if (n == "ANG") {
@@ -304,27 +279,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "OVR") {
       if (a.value != 100.0) warn_once(ctx, "OVR (drycut plans at 100 % override)", a.column);
     } else if (n[0] == 'T' && n.find_first_not_of("0123456789", 1) == std::string::npos) {
-      // T, or T<n>=t / T[n]=t: tool t for spindle n (Fundamentals, "Tool change with T command":
-      // address extension = spindle number). The master spindle's is the T drycut models.
-      if (n.size() > 1 && (n.size() > 3 || std::stoi(std::string(n.substr(1))) != master_spindle())) {
-        warn_once(ctx, std::string(n) + "= (a tool for spindle " + std::string(n.substr(1)) + ", not the master spindle: not simulated)",
-                  a.column);
-        continue;
-      }
-      // Checked before the conversion: a double outside long long's range is undefined there.
-      if (!(a.value >= 0 && a.value <= kMaxToolNumber) || a.value != std::floor(a.value))
-        raise(ctx, 12160, "T number must be a whole number 0..32000", a.column);
-      program_tool(ctx, std::to_string(static_cast<long long>(a.value)), a.column);
+      apply_tool_address(ctx, a);
     } else if (n == "D") {
-      // Range first: converting a double outside int's range is undefined behaviour.
-      if (!(a.value >= 0 && a.value <= kMaxEdgeNumber) || a.value != std::floor(a.value))
-        raise(ctx, 12160, "D must be a whole number >= 0", a.column);
-      // In a block that changes the tool the edge belongs to the new tool: taken at the change.
-      if (ctx.tool_change) continue;
-      std::vector<ToolNotice> notices;
-      tools_.select_edge(static_cast<int>(a.value), notices);
-      report_tool_notices(ctx, notices, a.column);
-      speed_from_cutting_speed(ctx, a.column);  // SVC: the new edge's radius
+      apply_edge_address(ctx, a);
     } else if (n == "SD") {
       if (a.value != 2 && a.value != 3) raise(ctx, 12160, "SD must be 2 or 3", a.column);
       state_.bspline_degree = static_cast<int>(a.value);
@@ -684,10 +641,8 @@ void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, b
   if (was_on && !is_on) raise(ctx, 10754, "G40 in a block that is not G0/G1", ctx.compensation_column);
 }
 
-void Interpreter::execute_motion(BlockContext& ctx) {
-  if (ctx.compensation_changed && state_.compensation != CompensationSide::None && !tools_.has_tool())
-    raise(ctx, 10750, "no tool is active", ctx.compensation_column);
-  // Dynamics changes are told to the planner once, where they happen.
+// Dynamics changes are told to the planner once, where they happen.
+void Interpreter::emit_dynamics_change(BlockContext& ctx) {
   if (state_.transition != last_dynamics_.transition || state_.accel != last_dynamics_.profile ||
       state_.dynamic_group != last_dynamics_.group || state_.axis_limits != last_dynamics_.limits) {
     last_dynamics_.transition = state_.transition;
@@ -696,28 +651,37 @@ void Interpreter::execute_motion(BlockContext& ctx) {
     last_dynamics_.limits = state_.axis_limits;
     emit_control(ctx, ElementKind::DynamicsChange, "dynamics");
   }
+}
 
+bool Interpreter::execute_axis_instruction(BlockContext& ctx) {
   if (ctx.frame_instruction) {
     apply_frame_instruction(ctx);
-    return;
+    return true;
   }
   if (ctx.axial_offset) {
     apply_axial_offset(ctx);
-    return;
+    return true;
   }
   if (ctx.speed_limit) {
     warn_working_area(ctx);
-    return;
+    return true;
   }
   if (ctx.pole) {
     define_pole(ctx);
-    return;
+    return true;
   }
-
   if (ctx.home_move) {
     move_to_fixed_point(ctx);
-    return;
+    return true;
   }
+  return false;
+}
+
+void Interpreter::execute_motion(BlockContext& ctx) {
+  if (ctx.compensation_changed && state_.compensation != CompensationSide::None && !tools_.has_tool())
+    raise(ctx, 10750, "no tool is active", ctx.compensation_column);
+  emit_dynamics_change(ctx);
+  if (execute_axis_instruction(ctx)) return;
   if (const AddressWord* fp = ctx.block.find_address("FP"))
     warn_once(ctx, "FP= without G75 (it selects the fixed point of G75 only)", fp->column);
   bool has_axis = false;
@@ -742,38 +706,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (ctx.geometry_positioning == GeometryPositioning::Alone) {
     position_geometry_axes(ctx, std::move(extra));
   } else if (has_axis || full_circle) {
-    const Target programmed = target_position(ctx);
-    const Vector3d& target = programmed.machine;
-    length_applied_ = programmed.length_after;
-    check_limits(ctx, target);
-    const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
-    if (run_ends && (state_.spline_mode() || state_.motion == MotionMode::ArcTangent)) {
-      // A new spline type, or CT (which is tangent to the run's end itself): ETAN takes the chord.
-      Vector3d direction = target - position_;
-      if (direction.norm() > 1e-12) direction.normalize();
-      end_spline_run(direction.norm() > 0 ? &direction : nullptr);
-    }
-    if (state_.spline_mode()) {
-      if (!extra.empty()) warn_once(ctx, "extra axes in spline blocks (they move without time)", 0);
-      add_spline_point(ctx, target);
-    } else {
-      const bool arc = arc_mode || state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
-      if (state_.thread_mode()) start_thread_block(ctx);
-      PathElement e = arc ? build_arc(ctx, programmed)
-                      : state_.motion == MotionMode::Polynomial ? build_polynomial(ctx, target)
-                                                                : build_line(ctx, target);
-      if (spline_.active()) {
-        // The run ends here; ETAN takes the direction this block starts in.
-        Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
-        end_spline_run(direction.norm() > 0 ? &direction : nullptr);
-      }
-      attach_extra_axes(ctx, e, std::move(extra));
-      mark_for_compressor(ctx, e);
-      request_corner(ctx, e);
-      position_ = e.curve->end();
-      check_limits(ctx, position_);
-      emit(std::move(e));
-    }
+    move_to_target(ctx, std::move(extra));
   } else if (!extra.empty() && state_.spline_mode()) {
     warn_once(ctx, "extra axes in spline blocks (they move without time)", 0);
   } else if (!extra.empty()) {

@@ -107,6 +107,11 @@ class Interpreter {
   void apply_g_words(BlockContext& ctx);
   void apply_commands(BlockContext& ctx);
   void apply_addresses(BlockContext& ctx);
+  // apply_addresses' words with rules of their own (interpreter_addresses.cpp).
+  void note_tool_change_m_words(BlockContext& ctx);  // the tool change M function (MD22550 = 1)
+  void apply_feed_address(BlockContext& ctx, const parser::AddressWord& a);  // F
+  void apply_tool_address(BlockContext& ctx, const parser::AddressWord& a);  // T, T<n>=
+  void apply_edge_address(BlockContext& ctx, const parser::AddressWord& a);  // D
   bool apply_smoothing_address(BlockContext& ctx, const parser::AddressWord& a);
   // RND=, RNDM=, CHF=, CHR=, FRC=, FRCM= (interpreter_corners.cpp, contour_corners.hpp).
   bool apply_corner_address(BlockContext& ctx, const parser::AddressWord& a);
@@ -148,6 +153,12 @@ class Interpreter {
   void emit_axis_waits(BlockContext& ctx);
   void emit_positioning(BlockContext& ctx);
   void execute_motion(BlockContext& ctx);
+  void emit_dynamics_change(BlockContext& ctx);  // transition, acceleration, limits changed
+  // Frame instruction, G58/G59, G25/G26, pole or G74/G75: the block's axis words are data of
+  // the instruction, not a path end point. True when the block was one of them (done).
+  bool execute_axis_instruction(BlockContext& ctx);
+  // A block with an end point or a full circle (interpreter_curves.cpp): spline point or element.
+  void move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> extra);
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
   PathElement build_arc(BlockContext& ctx, const Target& target);

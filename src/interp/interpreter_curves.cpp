@@ -14,6 +14,44 @@ using parser::AddressWord;
 using parser::ValueMode;
 using namespace detail;
 
+// A block with a geometry end point (or a full circle): a point of the spline run, or the
+// line, circle or polynomial element to the target; a spline run ends where its type does.
+void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> extra) {
+  const Target programmed = target_position(ctx);
+  const Vector3d& target = programmed.machine;
+  length_applied_ = programmed.length_after;
+  check_limits(ctx, target);
+  const bool run_ends = spline_.active() && !(state_.spline_mode() && state_.motion == spline_.mode());
+  if (run_ends && (state_.spline_mode() || state_.motion == MotionMode::ArcTangent)) {
+    // A new spline type, or CT (which is tangent to the run's end itself): ETAN takes the chord.
+    Vector3d direction = target - position_;
+    if (direction.norm() > 1e-12) direction.normalize();
+    end_spline_run(direction.norm() > 0 ? &direction : nullptr);
+  }
+  if (state_.spline_mode()) {
+    if (!extra.empty()) warn_once(ctx, "extra axes in spline blocks (they move without time)", 0);
+    add_spline_point(ctx, target);
+    return;
+  }
+  const bool arc = state_.motion == MotionMode::ArcCw || state_.motion == MotionMode::ArcCcw ||
+                   state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent;
+  if (state_.thread_mode()) start_thread_block(ctx);
+  PathElement e = arc ? build_arc(ctx, programmed)
+                  : state_.motion == MotionMode::Polynomial ? build_polynomial(ctx, target)
+                                                            : build_line(ctx, target);
+  if (spline_.active()) {
+    // The run ends here; ETAN takes the direction this block starts in.
+    Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
+    end_spline_run(direction.norm() > 0 ? &direction : nullptr);
+  }
+  attach_extra_axes(ctx, e, std::move(extra));
+  mark_for_compressor(ctx, e);
+  request_corner(ctx, e);
+  position_ = e.curve->end();
+  check_limits(ctx, position_);
+  emit(std::move(e));
+}
+
 PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   PathElement e = element_template(ctx, ElementKind::Line);
   e.rapid = state_.motion == MotionMode::Rapid;

@@ -360,30 +360,12 @@ bool LineParser::parse_statement(ParsedLine& out) {
       ((w == "ID" || w == "IDS") && peek(1).kind == TokenKind::Assign))
     return whole_line(Statement::SyncAction);
   if (w == "SETINT" || w == "ENABLE" || w == "DISABLE" || w == "CLRINT") return whole_line(Statement::Interrupt);
-  if (w == "EXTERN") {
-    ++pos_;
-    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "program name expected after EXTERN");
-    out.statement = Statement::Extern;
-    out.call_name = peek().text;
-    pos_ = tokens_.size() - 1;  // the parameter types declare nothing drycut needs
-    return true;
-  }
+  if (w == "EXTERN") return parse_extern(out);
   if (w == "REDEF") {
     parse_redef(out);
     return true;
   }
-  if (w == "DEFINE") {
-    ++pos_;
-    if (peek().kind != TokenKind::Name || !(peek(1).kind == TokenKind::Name && peek(1).text == "AS"))
-      throw LineError(12080, peek().column, "DEFINE name AS text expected");
-    out.statement = Statement::Define;
-    out.call_name = peek().text;
-    const uint32_t text_column = peek(2).column;
-    out.macro_text = line_.substr(std::min<size_t>(text_column - 1, line_.size()));
-    if (const size_t c = out.macro_text.find(';'); c != std::string_view::npos) out.macro_text = out.macro_text.substr(0, c);
-    pos_ = tokens_.size() - 1;
-    return true;
-  }
+  if (w == "DEFINE") return parse_define(out);
   if (w == "IF") {
     parse_if(out);
     return true;
@@ -395,29 +377,9 @@ bool LineParser::parse_statement(ParsedLine& out) {
   if (w == "REPEAT") return simple(Statement::Repeat);
   if (w == "LOOP") return simple(Statement::Loop);
   if (w == "ENDLOOP") return simple(Statement::EndLoop);
-  if (w == "WHILE" || w == "UNTIL") {
-    out.statement = w == "WHILE" ? Statement::While : Statement::Until;
-    ++pos_;
-    out.condition = expression(out);
-    expect_end();
-    return true;
-  }
-  if (w == "FOR") {
-    out.statement = Statement::For;
-    ++pos_;
-    if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "loop variable expected after FOR");
-    out.for_variable = peek().text;
-    ++pos_;
-    if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after the FOR variable");
-    ++pos_;
-    out.condition = expression(out);
-    if (!(peek().kind == TokenKind::Name && peek().text == "TO"))
-      throw LineError(12080, peek().column, "TO expected in FOR");
-    ++pos_;
-    out.for_end = expression(out);
-    expect_end();
-    return true;
-  }
+  if (w == "WHILE" || w == "UNTIL")
+    return parse_loop_condition(out, w == "WHILE" ? Statement::While : Statement::Until);
+  if (w == "FOR") return parse_for(out);
   if (jump_direction(w, out.jump)) {
     out.statement = Statement::Goto;
     ++pos_;
@@ -439,6 +401,56 @@ bool LineParser::parse_statement(ParsedLine& out) {
   }
   if (const std::optional<bool> call = parse_call(out, w)) return *call;
   return false;
+}
+
+bool LineParser::parse_extern(ParsedLine& out) {
+  ++pos_;
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "program name expected after EXTERN");
+  out.statement = Statement::Extern;
+  out.call_name = peek().text;
+  pos_ = tokens_.size() - 1;  // the parameter types declare nothing drycut needs
+  return true;
+}
+
+// DEFINE name AS text: the text is kept as written, up to a comment.
+bool LineParser::parse_define(ParsedLine& out) {
+  ++pos_;
+  if (peek().kind != TokenKind::Name || !(peek(1).kind == TokenKind::Name && peek(1).text == "AS"))
+    throw LineError(12080, peek().column, "DEFINE name AS text expected");
+  out.statement = Statement::Define;
+  out.call_name = peek().text;
+  const uint32_t text_column = peek(2).column;
+  out.macro_text = line_.substr(std::min<size_t>(text_column - 1, line_.size()));
+  if (const size_t c = out.macro_text.find(';'); c != std::string_view::npos) out.macro_text = out.macro_text.substr(0, c);
+  pos_ = tokens_.size() - 1;
+  return true;
+}
+
+// WHILE cond / UNTIL cond
+bool LineParser::parse_loop_condition(ParsedLine& out, Statement s) {
+  out.statement = s;
+  ++pos_;
+  out.condition = expression(out);
+  expect_end();
+  return true;
+}
+
+// FOR var = start TO end: the start value is kept as the condition.
+bool LineParser::parse_for(ParsedLine& out) {
+  out.statement = Statement::For;
+  ++pos_;
+  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "loop variable expected after FOR");
+  out.for_variable = peek().text;
+  ++pos_;
+  if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after the FOR variable");
+  ++pos_;
+  out.condition = expression(out);
+  if (!(peek().kind == TokenKind::Name && peek().text == "TO"))
+    throw LineError(12080, peek().column, "TO expected in FOR");
+  ++pos_;
+  out.for_end = expression(out);
+  expect_end();
+  return true;
 }
 
 // REDEF name attributes (Job Planning, "Redefinition of system variables, user variables and
@@ -631,47 +643,13 @@ void LineParser::parse_words(ParsedLine& out) {
     item.column = t.column;
     const Token& next = peek(1);
     if (next.kind == TokenKind::Assign) {
-      pos_ += 2;
-      int64_t ext = 0;
-      std::string_view letters;
-      if (t.text == "T" && peek().kind == TokenKind::String) {
-        item.kind = ItemKind::ToolName;
-        item.name = peek().text;  // case preserved
-        ++pos_;
-      } else if (split_letters_digits(t.text, letters, ext) && letters == "M") {
-        item.kind = ItemKind::M;  // M1=3: spindle 1, M3
-        item.extension = static_cast<int>(ext);
-        item.expr = expression(out);
-      } else {
-        item.kind = ItemKind::Assign;
-        item.expr = expression(out);
-      }
+      parse_assignment_word(out, item, t);
     } else if (t.text == "R" && next.kind == TokenKind::LBracket) {
-      pos_ += 2;
-      item.kind = ItemKind::Assign;
-      item.index = expression(out);
-      if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
-      ++pos_;
-      if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
-      ++pos_;
-      item.expr = expression(out);
+      parse_r_parameter_assignment(out, item);
     } else if ((t.text == "PO" || t.text == "MEASA" || t.text == "MEAWA") && next.kind == TokenKind::LBracket) {
       parse_list_assignment(out, item);
     } else if (next.kind == TokenKind::LBracket) {
-      // A[1,2]=..., $MA_COMPRESS_POS_TOL[X1]=..., G[8]=2, M[2]=3, S[1]=1000
-      ++pos_;
-      ExprIndex first = kNoExpr;
-      item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
-      item.index_first = first;
-      item.kind = ItemKind::Assign;
-      if (peek().kind != TokenKind::Assign && is_axis_indexed_command(item.name)) {
-        item.kind = ItemKind::Name;  // DIAMONA[X], SCC[X]: a command with an axis, no value
-        out.items.push_back(item);
-        continue;
-      }
-      if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after an array element");
-      ++pos_;
-      item.expr = expression(out);
+      parse_indexed_word(out, item);
     } else if (next.kind == TokenKind::LParen) {
       pos_ += 2;
       item.kind = ItemKind::Procedure;
@@ -680,57 +658,120 @@ void LineParser::parse_words(ParsedLine& out) {
       parse_item_arguments(out, item, args, true, "too many arguments");
     } else {
       ++pos_;
-      std::string_view letters;
-      int64_t digits = 0;
-      const bool letter_digits = split_letters_digits(t.text, letters, digits) && letters.size() == 1;
-      if (letter_digits) {
-        item.name = letters;
-        switch (letters[0]) {
-          case 'G': item.kind = ItemKind::G; item.code = digits; break;
-          case 'M': item.kind = ItemKind::M; item.code = digits; break;
-          case 'L': item.kind = ItemKind::LCall; item.code = digits; item.name = t.text; break;
-          case 'P': item.kind = ItemKind::Passes; item.code = digits; break;
-          case 'N': throw LineError(12080, t.column, "block number must stand at the start of the block");
-          case 'R': throw LineError(12080, t.column, "R parameter without '=' assignment");
-          default: {
-            item.kind = ItemKind::Address;
-            // The digits as written: "X0012" is 12, value parsed from the text, not the int.
-            double v = static_cast<double>(digits);  // exact below 2^53
-            if (digits >= (int64_t{1} << 53) &&
-                std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v).ec != std::errc())
-              throw LineError(12080, t.column + 1, "malformed number " + quoted(t.text.substr(1)));
-            item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, t.column + 1, kNoExpr, kNoExpr, v, t.text.substr(1)});
-          }
-        }
-      } else if (t.text.size() == 1 && t.text[0] != '_' && t.text[0] != '$' &&
-                 (peek().kind == TokenKind::Number ||
-                  ((peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) &&
-                   peek(1).kind == TokenKind::Number))) {
-        // "X-6.789", "X.5", "X 12": an address letter with a signed literal.
-        double sign = 1.0;
-        if (peek().kind != TokenKind::Number) {
-          sign = peek().kind == TokenKind::Minus ? -1.0 : 1.0;
-          ++pos_;
-        }
-        const Token& num = peek();
-        ++pos_;
-        const double v = sign * num.number;
-        const char letter = t.text[0];
-        if (letter == 'G' || letter == 'M' || letter == 'L' || letter == 'P' || letter == 'N' || letter == 'R') {
-          // Range before the conversion: a double beyond int64 is undefined behaviour there.
-          if (letter == 'N' || letter == 'R' || v < 0 || v >= 9.2e18 || v != std::trunc(v))
-            throw LineError(12080, t.column, "malformed " + std::string(t.text) + " word");
-          item.code = static_cast<int64_t>(v);
-          item.kind = letter == 'G' ? ItemKind::G : letter == 'M' ? ItemKind::M : letter == 'L' ? ItemKind::LCall : ItemKind::Passes;
-        } else {
-          item.kind = ItemKind::Address;
-          item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, num.column, kNoExpr, kNoExpr, v, num.text});
-        }
-      } else {
-        item.kind = ItemKind::Name;
-      }
+      parse_plain_word(out, item, t);
     }
     out.items.push_back(item);
+  }
+}
+
+// NAME=value; T="name" (a tool by name), M1=3 (spindle 1, M3).
+void LineParser::parse_assignment_word(ParsedLine& out, Item& item, const Token& t) {
+  pos_ += 2;
+  int64_t ext = 0;
+  std::string_view letters;
+  if (t.text == "T" && peek().kind == TokenKind::String) {
+    item.kind = ItemKind::ToolName;
+    item.name = peek().text;  // case preserved
+    ++pos_;
+  } else if (split_letters_digits(t.text, letters, ext) && letters == "M") {
+    item.kind = ItemKind::M;  // M1=3: spindle 1, M3
+    item.extension = static_cast<int>(ext);
+    item.expr = expression(out);
+  } else {
+    item.kind = ItemKind::Assign;
+    item.expr = expression(out);
+  }
+}
+
+// R[index]=value
+void LineParser::parse_r_parameter_assignment(ParsedLine& out, Item& item) {
+  pos_ += 2;
+  item.kind = ItemKind::Assign;
+  item.index = expression(out);
+  if (peek().kind != TokenKind::RBracket) throw LineError(12080, peek().column, "missing ']'");
+  ++pos_;
+  if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected");
+  ++pos_;
+  item.expr = expression(out);
+}
+
+// A[1,2]=..., $MA_COMPRESS_POS_TOL[X1]=..., G[8]=2, M[2]=3, S[1]=1000; DIAMONA[X] without a value.
+void LineParser::parse_indexed_word(ParsedLine& out, Item& item) {
+  ++pos_;
+  ExprIndex first = kNoExpr;
+  item.index_count = parse_index_list(tokens_, pos_, out.pool, first);
+  item.index_first = first;
+  item.kind = ItemKind::Assign;
+  if (peek().kind != TokenKind::Assign && is_axis_indexed_command(item.name)) {
+    item.kind = ItemKind::Name;  // DIAMONA[X], SCC[X]: a command with an axis, no value
+    return;
+  }
+  if (peek().kind != TokenKind::Assign) throw LineError(12080, peek().column, "'=' expected after an array element");
+  ++pos_;
+  item.expr = expression(out);
+}
+
+// A word followed by no '=', '[' or '(' (its name token already taken): "G642", "X10",
+// "X-6.789", "X 12", or a name (a command, a subprogram call).
+void LineParser::parse_plain_word(ParsedLine& out, Item& item, const Token& t) {
+  std::string_view letters;
+  int64_t digits = 0;
+  const bool letter_digits = split_letters_digits(t.text, letters, digits) && letters.size() == 1;
+  if (letter_digits) {
+    parse_letter_digits_word(out, item, t, letters, digits);
+  } else if (t.text.size() == 1 && t.text[0] != '_' && t.text[0] != '$' &&
+             (peek().kind == TokenKind::Number ||
+              ((peek().kind == TokenKind::Minus || peek().kind == TokenKind::Plus) &&
+               peek(1).kind == TokenKind::Number))) {
+    parse_letter_number_word(out, item, t);
+  } else {
+    item.kind = ItemKind::Name;
+  }
+}
+
+// One letter and its digits in one token: "G642", "M3", "L100", "P2", "X0012".
+void LineParser::parse_letter_digits_word(ParsedLine& out, Item& item, const Token& t, std::string_view letters,
+                                          int64_t digits) {
+  item.name = letters;
+  switch (letters[0]) {
+    case 'G': item.kind = ItemKind::G; item.code = digits; break;
+    case 'M': item.kind = ItemKind::M; item.code = digits; break;
+    case 'L': item.kind = ItemKind::LCall; item.code = digits; item.name = t.text; break;
+    case 'P': item.kind = ItemKind::Passes; item.code = digits; break;
+    case 'N': throw LineError(12080, t.column, "block number must stand at the start of the block");
+    case 'R': throw LineError(12080, t.column, "R parameter without '=' assignment");
+    default: {
+      item.kind = ItemKind::Address;
+      // The digits as written: "X0012" is 12, value parsed from the text, not the int.
+      double v = static_cast<double>(digits);  // exact below 2^53
+      if (digits >= (int64_t{1} << 53) &&
+          std::from_chars(t.text.data() + 1, t.text.data() + t.text.size(), v).ec != std::errc())
+        throw LineError(12080, t.column + 1, "malformed number " + quoted(t.text.substr(1)));
+      item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, t.column + 1, kNoExpr, kNoExpr, v, t.text.substr(1)});
+    }
+  }
+}
+
+// "X-6.789", "X.5", "X 12": an address letter with a signed literal (a token of its own).
+void LineParser::parse_letter_number_word(ParsedLine& out, Item& item, const Token& t) {
+  double sign = 1.0;
+  if (peek().kind != TokenKind::Number) {
+    sign = peek().kind == TokenKind::Minus ? -1.0 : 1.0;
+    ++pos_;
+  }
+  const Token& num = peek();
+  ++pos_;
+  const double v = sign * num.number;
+  const char letter = t.text[0];
+  if (letter == 'G' || letter == 'M' || letter == 'L' || letter == 'P' || letter == 'N' || letter == 'R') {
+    // Range before the conversion: a double beyond int64 is undefined behaviour there.
+    if (letter == 'N' || letter == 'R' || v < 0 || v >= 9.2e18 || v != std::trunc(v))
+      throw LineError(12080, t.column, "malformed " + std::string(t.text) + " word");
+    item.code = static_cast<int64_t>(v);
+    item.kind = letter == 'G' ? ItemKind::G : letter == 'M' ? ItemKind::M : letter == 'L' ? ItemKind::LCall : ItemKind::Passes;
+  } else {
+    item.kind = ItemKind::Address;
+    item.expr = out.pool.add(ExprNode{ExprOp::Number, Function::Sin, num.column, kNoExpr, kNoExpr, v, num.text});
   }
 }
 

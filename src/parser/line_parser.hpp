@@ -21,11 +21,24 @@ class LineParser {
  private:
   void parse_head(ParsedLine& out);
   bool parse_statement(ParsedLine& out);
+  // parse_statement's statements with a syntax of their own; true (the line is a statement).
+  bool parse_extern(ParsedLine& out);
+  bool parse_define(ParsedLine& out);
+  bool parse_loop_condition(ParsedLine& out, Statement s);  // WHILE cond, UNTIL cond
+  bool parse_for(ParsedLine& out);
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_section_labels(std::string_view& start, std::string_view& end);
   void parse_redef(ParsedLine& out);
   void parse_if(ParsedLine& out);
   void parse_words(ParsedLine& out);
+  // parse_words' kinds of word, from the word's name token `t` on (item: name and column set).
+  void parse_assignment_word(ParsedLine& out, Item& item, const Token& t);  // NAME=.., T="..", M1=3
+  void parse_r_parameter_assignment(ParsedLine& out, Item& item);            // R[i]=..
+  void parse_indexed_word(ParsedLine& out, Item& item);                      // A[1,2]=.., DIAMONA[X]
+  void parse_plain_word(ParsedLine& out, Item& item, const Token& t);        // G1, X10, X-6.7, NAME
+  void parse_letter_digits_word(ParsedLine& out, Item& item, const Token& t, std::string_view letters,
+                                int64_t digits);
+  void parse_letter_number_word(ParsedLine& out, Item& item, const Token& t);
   void parse_list_assignment(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..), MEASA[X]=(..)
   // The values up to ')' (after '(') into the pool's argument list as item.arg_first/arg_count.
   void parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,

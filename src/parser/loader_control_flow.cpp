@@ -126,72 +126,80 @@ void ProgramLoader::execute_control() {
       if (check_endless_loop()) f.reader.seek(after);  // the awaited input came: the loop ends
       return;
     }
-    case Statement::For: {
-      const double start = eval(parsed_.condition);
-      c.end = eval(parsed_.for_end);
-      c.variable = std::string(parsed_.for_variable);
-      if (Variable* v = find_variable(c.variable)) {
-        v->set(v->element({}, column), Value(start), column);
-      } else if (c.variable.size() >= 2 && c.variable[0] == 'R' &&
-                 c.variable.find_first_not_of("0123456789", 1) == std::string::npos) {  // R<n>, not RX
-        assign_r_parameter(std::stod(c.variable.substr(1)), start, column);
-      } else {
-        throw LineError(12550, column, "FOR variable " + c.variable + " not defined");
-      }
-      if (start > c.end)
-        skip_forward(false);
-      else
-        push_control(c);
+    case Statement::For:
+      start_for_loop(c, column);
       return;
-    }
-    case Statement::EndFor: {
+    case Statement::EndFor:
       expect_top(Statement::For);
-      ControlFrame& top = stack.back();
-      // Advance the loop variable: an INT/REAL variable or an R parameter.
-      double value;
-      if (Variable* v = find_variable(top.variable)) {
-        const size_t e = v->element({}, column);
-        value = v->get(e).number + 1.0;
-        v->set(e, Value(value), column);
-      } else {
-        const double index = std::stod(top.variable.substr(1));
-        value = r_parameters_[static_cast<size_t>(index)] += 1.0;
-      }
-      if (value <= top.end)
-        f.reader.seek(top.body);  // the variable changed: never the same state
-      else
-        stack.pop_back();
+      next_for_pass(f, column);
       return;
-    }
     case Statement::Repeat:
     case Statement::Loop:
       push_control(c);
       return;
     case Statement::Until:
       expect_top(Statement::Repeat);
-      if (eval(parsed_.condition) == 0.0) {
-        const LinePosition after = f.reader.tell();
-        f.reader.seek(stack.back().body);
-        if (check_endless_loop()) {  // the awaited input came: the loop ends
-          f.reader.seek(after);
-          stack.pop_back();
-        }
-      } else {
+      if (eval(parsed_.condition) == 0.0)
+        repeat_loop_body(f);
+      else
         stack.pop_back();
-      }
       return;
-    case Statement::EndLoop: {
+    case Statement::EndLoop:
       expect_top(Statement::Loop);
-      const LinePosition after = f.reader.tell();
-      f.reader.seek(stack.back().body);
-      if (check_endless_loop()) {  // it waits for an input (and jumps out when it comes)
-        f.reader.seek(after);
-        stack.pop_back();
-      }
+      repeat_loop_body(f);  // it waits for an input (and jumps out when it comes)
       return;
-    }
     default:
       return;
+  }
+}
+
+// FOR: sets the loop variable (an INT/REAL variable or an R parameter) to the start value and
+// enters the body, or skips it when the start is beyond the end.
+void ProgramLoader::start_for_loop(ControlFrame& c, uint32_t column) {
+  const double start = eval(parsed_.condition);
+  c.end = eval(parsed_.for_end);
+  c.variable = std::string(parsed_.for_variable);
+  if (Variable* v = find_variable(c.variable)) {
+    v->set(v->element({}, column), Value(start), column);
+  } else if (c.variable.size() >= 2 && c.variable[0] == 'R' &&
+             c.variable.find_first_not_of("0123456789", 1) == std::string::npos) {  // R<n>, not RX
+    assign_r_parameter(std::stod(c.variable.substr(1)), start, column);
+  } else {
+    throw LineError(12550, column, "FOR variable " + c.variable + " not defined");
+  }
+  if (start > c.end)
+    skip_forward(false);
+  else
+    push_control(c);
+}
+
+// ENDFOR: advances the loop variable of the innermost FOR (an INT/REAL variable or an R
+// parameter) and runs the body again while it has not passed the end value.
+void ProgramLoader::next_for_pass(Frame& f, uint32_t column) {
+  ControlFrame& top = f.control.back();
+  double value;
+  if (Variable* v = find_variable(top.variable)) {
+    const size_t e = v->element({}, column);
+    value = v->get(e).number + 1.0;
+    v->set(e, Value(value), column);
+  } else {
+    const double index = std::stod(top.variable.substr(1));
+    value = r_parameters_[static_cast<size_t>(index)] += 1.0;
+  }
+  if (value <= top.end)
+    f.reader.seek(top.body);  // the variable changed: never the same state
+  else
+    f.control.pop_back();
+}
+
+// UNTIL (condition false) and ENDLOOP: back to the body of the innermost REPEAT / LOOP, unless
+// the endless-loop check finds the loop waiting for an input that came: then the loop ends.
+void ProgramLoader::repeat_loop_body(Frame& f) {
+  const LinePosition after = f.reader.tell();
+  f.reader.seek(f.control.back().body);
+  if (check_endless_loop()) {  // the awaited input came: the loop ends
+    f.reader.seek(after);
+    f.control.pop_back();
   }
 }
 

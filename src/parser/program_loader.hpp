@@ -148,6 +148,9 @@ class ProgramLoader {
   void expand_macros();
   // loader_control_flow.cpp
   void execute_control();
+  void start_for_loop(ControlFrame& c, uint32_t column);  // FOR
+  void next_for_pass(Frame& f, uint32_t column);          // ENDFOR
+  void repeat_loop_body(Frame& f);                        // UNTIL (false), ENDLOOP
   void execute_if_goto();
   void execute_case();
   void execute_repeat_section();
