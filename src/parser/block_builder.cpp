@@ -319,6 +319,16 @@ class ProgramLoader::BlockBuilder {
       tool_query(item);
       return;
     }
+    if (item.name == "EXECSTRING") {
+      // EXECSTRING(text): the text runs as the next program line (Job Planning, "EXECSTRING");
+      // alarms of it point at this line.
+      const ExprIndex a = item.arg_count == 1 ? l_.parsed_.pool.args[item.arg_first] : kNoExpr;
+      if (a == kNoExpr) throw LineError(12080, item.column, "EXECSTRING needs the line to run as a string");
+      const Value v = l_.eval_value(a);
+      if (!v.is_text()) throw LineError(12150, item.column, "EXECSTRING needs a string");
+      l_.pending_line_ = v.text;
+      return;
+    }
     const Support s = command_support(item.name);
     if (skipped_command(item, s)) return;
     if (s == Support::Modelled) {

@@ -144,7 +144,7 @@ constexpr std::array kCommands{
     CommandEntry{"DELTC", N}, CommandEntry{"DZERO", N}, CommandEntry{"EGDEF", N},
     CommandEntry{"EGDEL", N}, CommandEntry{"EGOFC", N}, CommandEntry{"EGOFS", N},
     CommandEntry{"EGON", N}, CommandEntry{"EGONSYN", N}, CommandEntry{"EGONSYNE", N},
-    CommandEntry{"ESRR", N}, CommandEntry{"ESRS", N}, CommandEntry{"EXECSTRING", N},
+    CommandEntry{"ESRR", N}, CommandEntry{"ESRS", N}, CommandEntry{"EXECSTRING", M},
     CommandEntry{"EXECTAB", N}, CommandEntry{"EXECUTE", N}, CommandEntry{"EXTCLOSE", N},
     CommandEntry{"EXTOPEN", N}, CommandEntry{"FCTDEF", N}, CommandEntry{"FILEDATE", N},
     CommandEntry{"FILEINFO", N}, CommandEntry{"FILESIZE", N}, CommandEntry{"FILESTAT", N},

@@ -65,6 +65,7 @@ constexpr std::array kStatements{
     Row{"REDEF name attributes", M, "new access rights, preprocessing stop, initialisation or limits of a name (definition files): accepted, nothing changes"},
     Row{"SETAL(n[, text])", M, "cycle/user alarm: 62000-62999 and 67000-67999 only display (warning), the rest of 60000-69999 stop the program"},
     Row{"MSG(text)", M, "message (composed with <<)"},
+    Row{"EXECSTRING(text)", M, "the string runs as a program line of its own after this line"},
     Row{"STOPRE", M, "preprocessing stop"},
     Row{"ID=n WHEN/WHENEVER/FROM/EVERY ... DO ...", N, "synchronized actions: accepted, not simulated"},
     Row{"SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", N, "interrupt routines: accepted, never triggered in a dry run"},

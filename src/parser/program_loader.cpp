@@ -165,7 +165,10 @@ bool ProgramLoader::next(Block& out) {
       return true;
     }
     Frame& f = *frames_.back();
-    if (!read_line(f)) {
+    if (pending_line_) {
+      text_ = std::move(*pending_line_);  // EXECSTRING: at the position of its own line
+      pending_line_.reset();
+    } else if (!read_line(f)) {
       end_of_file();
       continue;
     }

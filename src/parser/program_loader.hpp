@@ -208,6 +208,7 @@ class ProgramLoader {
   LinePosition position_;
 
   PendingAction pending_ = PendingAction::None;
+  std::optional<std::string> pending_line_;  // EXECSTRING's text: runs before the next line is read
   ModalSave pending_save_ = ModalSave::None;  // told to the interpreter with the next block
   std::string pending_call_;
   // DRYCUT_CONTOUR_CALL("[PROG:]START:END"): the section to run instead (no PROG: of the caller).
