@@ -320,13 +320,7 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     if (item.name == "EXECSTRING") {
-      // EXECSTRING(text): the text runs as the next program line (Job Planning, "EXECSTRING");
-      // alarms of it point at this line.
-      const ExprIndex a = item.arg_count == 1 ? l_.parsed_.pool.args[item.arg_first] : kNoExpr;
-      if (a == kNoExpr) throw LineError(12080, item.column, "EXECSTRING needs the line to run as a string");
-      const Value v = l_.eval_value(a);
-      if (!v.is_text()) throw LineError(12150, item.column, "EXECSTRING needs a string");
-      l_.pending_line_ = v.text;
+      exec_string(item);
       return;
     }
     const Support s = command_support(item.name);
@@ -377,6 +371,16 @@ class ProgramLoader::BlockBuilder {
       section_start_ = parts[parts.size() - 2];
       section_end_ = parts.back();
     }
+  }
+
+  // EXECSTRING(text): the text runs as the next program line (Job Planning, "EXECSTRING");
+  // alarms of it point at this line.
+  void exec_string(const Item& item) {
+    const ExprIndex a = item.arg_count == 1 ? l_.parsed_.pool.args[item.arg_first] : kNoExpr;
+    if (a == kNoExpr) throw LineError(12080, item.column, "EXECSTRING needs the line to run as a string");
+    const Value v = l_.eval_value(a);
+    if (!v.is_text()) throw LineError(12150, item.column, "EXECSTRING needs a string");
+    l_.pending_line_ = v.text;
   }
 
   // GETSELT(VAR INT t[, spindle]) / GETEXET(VAR INT t[, spindle]): the T number of the tool
