@@ -380,6 +380,7 @@ class ProgramLoader::BlockBuilder {
     if (a == kNoExpr) throw LineError(12080, item.column, "EXECSTRING needs the line to run as a string");
     const Value v = l_.eval_value(a);
     if (!v.is_text()) throw LineError(12150, item.column, "EXECSTRING needs a string");
+    if (l_.pending_line_) throw LineError(12080, item.column, "two EXECSTRING in one block");
     l_.pending_line_ = v.text;
   }
 

@@ -87,6 +87,28 @@ std::vector<std::string> ProgramLoader::commands_used() const {
   return out;
 }
 
+void ProgramLoader::count_line() {
+  system_variables_.begin_line();
+  if (++steps_ > options_.max_steps) {
+    text_.clear();
+    raise(990004, "more than " + std::to_string(options_.max_steps) + " lines executed", 0);
+  }
+}
+
+bool ProgramLoader::take_pending_line() {
+  // EXECSTRING: its text runs as a line of its own, at the position of the EXECSTRING line, before
+  // what that block asked for next (a call, the return, the end). A string that runs
+  // EXECSTRING again and again is an endless loop.
+  constexpr int kMaxExecStringChain = 1000;
+  text_ = std::move(*pending_line_);
+  pending_line_.reset();
+  if (++exec_string_chain_ > kMaxExecStringChain)
+    raise(990004, "EXECSTRING runs EXECSTRING more than " + std::to_string(kMaxExecStringChain) + " times in a row", 0);
+  count_line();
+  if (!macros_.empty() && may_hold_macro()) expand_macros();
+  return !is_blank_or_comment(text_);
+}
+
 bool ProgramLoader::read_line(Frame& f) {
   for (;;) {
     bool got = f.reader.next(raw_);
@@ -106,11 +128,8 @@ bool ProgramLoader::read_line(Frame& f) {
     if (!f.repeats.empty() && end_of_repeat_section(f)) continue;
     break;
   }
-  system_variables_.begin_line();
-  if (++steps_ > options_.max_steps) {
-    text_.clear();
-    raise(990004, "more than " + std::to_string(options_.max_steps) + " lines executed", 0);
-  }
+  count_line();
+  exec_string_chain_ = 0;
   if (raw_.too_long) {
     text_.clear();
     raise(12080, "block longer than " + std::to_string(LineReader::kMaxLineLength) + " characters", 1);
@@ -132,6 +151,13 @@ bool ProgramLoader::next(Block& out) {
     throw AlarmError(alarm);
   }
   for (;;) {
+    if (pending_line_ && !frames_.empty()) {
+      if (take_pending_line() && execute_line(out)) {
+        if (modal_call_) schedule_modal_call(out);
+        return true;
+      }
+      continue;
+    }
     switch (pending_) {
       case PendingAction::None: break;
       case PendingAction::Call:
@@ -165,10 +191,7 @@ bool ProgramLoader::next(Block& out) {
       return true;
     }
     Frame& f = *frames_.back();
-    if (pending_line_) {
-      text_ = std::move(*pending_line_);  // EXECSTRING: at the position of its own line
-      pending_line_.reset();
-    } else if (!read_line(f)) {
+    if (!read_line(f)) {
       end_of_file();
       continue;
     }

@@ -111,6 +111,8 @@ class ProgramLoader {
   // program_loader.cpp
   bool read_line(Frame& f);  // next line into text_/position_; false at end of file
   void return_one_level();   // RET/M17, one program level (RET(...) may ask for more)
+  void count_line();          // a line starts: the step limit, the system variables' line count
+  bool take_pending_line();   // EXECSTRING's text becomes the line; false: nothing to run
   bool execute_line(Block& out);
   void call_program(const std::string& written_name, uint64_t passes, uint32_t column);
   // A called program that is a section of an archive file already open; false when none is.
@@ -209,6 +211,7 @@ class ProgramLoader {
 
   PendingAction pending_ = PendingAction::None;
   std::optional<std::string> pending_line_;  // EXECSTRING's text: runs before the next line is read
+  int exec_string_chain_ = 0;                  // EXECSTRING lines run since the last line read
   ModalSave pending_save_ = ModalSave::None;  // told to the interpreter with the next block
   std::string pending_call_;
   // DRYCUT_CONTOUR_CALL("[PROG:]START:END"): the section to run instead (no PROG: of the caller).
