@@ -21,8 +21,9 @@
 //   $DRYCUT_CONTOUR[i, k], in the working plane active when it is read (G18: abscissa Z,
 //   ordinate X): k = 0 kind (0 G0, 1 G1, 2 G2, 3 G3: a circle's sense, clockwise G2, is judged
 //   looking along the plane normal from its positive side, as for G2/G3), 1/2 start
-//   abscissa/ordinate, 3/4 end, 5/6 circle centre (0 for a line). A spline or other curve is
-//   recorded as the line between its ends (the cycles see its chord).
+//   abscissa/ordinate, 3/4 end, 5/6 circle centre, 7 the circle's sweep in degrees (positive
+//   counter-clockwise: G3), 8 its radius (7/8 as 5/6 are 0 for a line). A spline or other curve
+//   is recorded as the line between its ends (the cycles see its chord).
 #include <functional>
 #include <optional>
 #include <vector>
@@ -37,6 +38,7 @@ struct RecordedContourElement {
   bool arc = false;
   // Workpiece system, program units, radius; quarter: the point a quarter along (its sense).
   geometry::Vec3 start, quarter, end, centre;
+  double sweep_deg = 0;  // a circle's angle, without sign (frames keep it; the sense is from quarter)
 };
 
 class ContourRecorder final : public ElementSink {
@@ -55,6 +57,7 @@ class ContourRecorder final : public ElementSink {
   void consume(PathElement&& element) override;
   void finish() override {}
 
+  static constexpr int kColumns = 9;  // k = 0 .. 8 (see above)
   size_t size() const { return elements_.size(); }
   // Column k of element i in the given plane; nullopt out of range.
   std::optional<double> value(size_t i, int k, const PlaneIndices& plane) const;

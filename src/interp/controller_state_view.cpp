@@ -165,12 +165,13 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_F") return Value(s.feed);
   // drycut's contour recording (contour_recording.hpp): the count and [element, column].
   if (n == "$DRYCUT_CONTOUR_N") return Value(static_cast<double>(interpreter_.recorded_contour().size()));
-  const double contour_size = static_cast<double>(interpreter_.recorded_contour().size());
-  if (n == "$DRYCUT_CONTOUR" && indices.size() == 2 && indices[0].is_number() && indices[1].is_number() &&
-      indices[0].number >= 0 && indices[0].number < contour_size && indices[0].number == std::trunc(indices[0].number) &&
-      indices[1].number >= 0 && indices[1].number <= 6 && indices[1].number == std::trunc(indices[1].number))
-    return number(interpreter_.recorded_contour().value(static_cast<size_t>(indices[0].number),
-                                                        static_cast<int>(indices[1].number), s.plane_indices()));
+  if (n == "$DRYCUT_CONTOUR" && indices.size() == 2 && indices[0].is_number() && indices[1].is_number()) {
+    const ContourRecorder& contour = interpreter_.recorded_contour();
+    const double i = indices[0].number, k = indices[1].number;
+    if (i >= 0 && i < static_cast<double>(contour.size()) && i == std::trunc(i) && k >= 0 &&
+        k < ContourRecorder::kColumns && k == std::trunc(k))
+      return number(contour.value(static_cast<size_t>(i), static_cast<int>(k), s.plane_indices()));
+  }
   if (n == "$P_S" || n == "$AA_S") return Value(s.spindle_rpm);
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));

@@ -4,7 +4,8 @@
 //   arc about (Z-20, X20), radius 10, from (Z-20, X10) to (Z-30, X20) over a quarter turn through
 //   (Z-27.07, X12.93): in (Z, X) the start is at -90°, the end at 180°: the turn is clockwise
 //   (G2); the same arc run backwards is G3.
-//   a whole circle about (Z0, X0) counter-clockwise in (Z, X): G3 (start = end).
+//   Its sweep is -90 degrees (clockwise), the reverse +90; the radius 10 for both.
+//   a whole circle about (Z0, X0) counter-clockwise in (Z, X): G3 (start = end), sweep +360.
 //   a machine -> workpiece map (here: minus a shift of 5 on X) is applied to every point.
 #include <gtest/gtest.h>
 
@@ -64,10 +65,15 @@ TEST(ContourRecorder, LinesAndArcsInTheZxPlane) {
   EXPECT_NEAR(v(1, 4), 20.0, 1e-9);
   EXPECT_NEAR(v(1, 5), -20.0, 1e-9);
   EXPECT_NEAR(v(1, 6), 20.0, 1e-9);
+  EXPECT_NEAR(v(1, 7), -90.0, 1e-9);
+  EXPECT_NEAR(v(1, 8), 10.0, 1e-9);
   EXPECT_EQ(v(2, 0), 3.0);
+  EXPECT_NEAR(v(2, 7), 90.0, 1e-9);
+  EXPECT_EQ(v(0, 7), 0.0);  // a line has no sweep and no radius
+  EXPECT_EQ(v(0, 8), 0.0);
   EXPECT_EQ(v(3, 0), 0.0);  // rapid
   EXPECT_FALSE(rec.value(4, 0, kG18));
-  EXPECT_FALSE(rec.value(0, 7, kG18));
+  EXPECT_FALSE(rec.value(0, 9, kG18));
 }
 
 TEST(ContourRecorder, WholeCircleKeepsItsSense) {
@@ -77,6 +83,8 @@ TEST(ContourRecorder, WholeCircleKeepsItsSense) {
   rec.consume(arc_zx(0, 0, 10, 0, -360));
   EXPECT_EQ(*rec.value(0, 0, kG18), 3.0);
   EXPECT_EQ(*rec.value(1, 0, kG18), 2.0);
+  EXPECT_NEAR(*rec.value(0, 7, kG18), 360.0, 1e-9);
+  EXPECT_NEAR(*rec.value(1, 7, kG18), -360.0, 1e-9);
   // Start and end coincide: the sense comes from a point inside the arc, not from the ends.
   EXPECT_NEAR(*rec.value(0, 1, kG18), *rec.value(0, 3, kG18), 1e-9);
 }
