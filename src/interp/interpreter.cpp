@@ -96,7 +96,14 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   apply_addresses(ctx);
   apply_axis_words(ctx);
   apply_m_words(ctx);
+  // G63 (tapping with a compensating chuck; Fundamentals, "Tapping with compensating chuck
+  // (G63)") is non-modal: its block runs linear at F (at a fixed 100 % override, as drycut plans
+  // anyway), and the motion command in force before it (often the G0 of the approach) applies
+  // again from the next block.
+  const MotionMode modal_motion = state_.motion;
+  if (ctx.tapping_chuck) state_.motion = MotionMode::Linear;
   execute_motion(ctx);
+  if (ctx.tapping_chuck) state_.motion = modal_motion;
   warn_unused_corner(ctx);
   if (!ctx.simple) block_between_compressible_ = true;
 }
@@ -178,7 +185,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       case 601: case 602: case 603:  // exact-stop window: no effect on the planned set-point
         state_.exact_stop_window = code;
         continue;
-      case 63: continue;  // tapping with compensating chuck: moves with F at a fixed 100 % override, as planned anyway
+      case 63: ctx.tapping_chuck = true; continue;
       case 291:
         // ISO dialect mode (an option of the control): G, M and addresses mean other things there
         // (G70 cycle, M98 call, R radius, #100 variables); read as Siemens code they would give a

@@ -130,6 +130,7 @@ class Interpreter {
   void apply_m_words(BlockContext& ctx);
   // Extra axes and positioning axes (interpreter_axes.cpp, docs/axes.md).
   bool note_extra_axis_word(BlockContext& ctx, const parser::AddressWord& word);
+  bool note_unknown_axis_word(BlockContext& ctx, const parser::AddressWord& word);
   bool apply_axis_command(BlockContext& ctx, const parser::CommandWord& command);
   void apply_axis_words(BlockContext& ctx);
   // DIAMON ... DIAMCYCOF, DIAMONA[ax] ... DIAMCHANA[ax], DIAMCHAN, SCC[ax] (interpreter_turning.cpp).

@@ -50,7 +50,28 @@ bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) 
     warn_once(ctx, "tool orientation A2/B2/C2, A3/B3/C3, A4..C5 (the rotary axes' moves for it are not simulated)", a.column);
     return true;
   }
-  return false;
+  return note_unknown_axis_word(ctx, a);
+}
+
+bool Interpreter::note_unknown_axis_word(BlockContext& ctx, const AddressWord& a) {
+  // Words that name an axis drycut does not have: never dropped without a word (a tool-change
+  // retract `G0 X1=30` that moves nothing puts every later move in the wrong place).
+  const std::string_view n = a.name;
+  if (ctx.home_move != 0 && machine_axis_index(n) >= 0) return true;  // G74/G75 move it
+  if (machine_axis_index(n) >= 0) {
+    warn_once(ctx, a.name + "= (the machine axis name of " + std::string(n.substr(0, 1)) +
+                       ") outside G74/G75: the axis does not move",
+              a.column);
+    return true;
+  }
+  // Q and E are assignable addresses (axis names on some machines); X2, Z3, U1 ... extended
+  // axis addresses of axes the profile lacks.
+  const bool lone_assignable = n == "Q" || n == "E";
+  const bool extended_axis = n.size() > 1 && std::string_view("XYZABCUVWQE").find(n[0]) != std::string_view::npos &&
+                             n.find_first_not_of("0123456789", 1) == std::string_view::npos;
+  if (!lone_assignable && !extended_axis) return false;
+  warn_once(ctx, "axis " + a.name + " is not in the machine profile (its moves are not simulated)", a.column);
+  return true;
 }
 
 bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWord& c) {
@@ -215,7 +236,7 @@ void Interpreter::move_to_fixed_point(BlockContext& ctx) {
   }
   Vector3d target = position_;
   for (const AddressWord& a : ctx.block.addresses) {
-    const int i = axis_index(a.name);
+    const int i = axis_index(a.name) >= 0 ? axis_index(a.name) : machine_axis_index(a.name);  // X or X1
     if (i < 0) {
       if (a.name != "FP" && extra_axes_.index(a.name) >= 0)
         warn_once(ctx, "G" + std::to_string(ctx.home_move) + " of axis " + a.name + " (the axis does not move)", a.column);

@@ -37,6 +37,15 @@ inline int axis_index(std::string_view name) {
   return -1;
 }
 
+// The machine axis of geometry axis X, Y, Z by its MD10000 AXCONF_MACHAX_NAME_TAB name: drycut's
+// profiles name the machine axes after their channel axis with "1" (X1, Y1, Z1; the default
+// machine data, machine_data_values.cpp), as G74/G75 address them (Fundamentals, "Fixed-point
+// approach (G75)": `G75 FP=2 X1=0 Z1=0`).
+inline int machine_axis_index(std::string_view name) {
+  if (name.size() != 2 || name[1] != '1') return -1;
+  return axis_index(name.substr(0, 1));
+}
+
 // The letters of further axes (A B C rotary, U V W linear by convention): a program may use them
 // on a machine whose profile lacks them (a warning, never an alarm).
 inline bool is_axis_letter_name(std::string_view n) {
@@ -120,6 +129,7 @@ struct Interpreter::BlockContext {
   bool exact_stop = false;      // G9
   bool suppress_offsets = false;  // G53, G153, SUPA: no frame for this block
   int home_move = 0;              // G74 (reference point) / G75 (fixed point) in this block
+  bool tapping_chuck = false;     // G63: this block runs linear at F, the modal motion after it
   bool dwell = false;           // G4
   int speed_limit = 0;          // G25 / G26: S is the lower / upper spindle speed limit
   bool tool_change = false;     // M6
