@@ -172,7 +172,13 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
         k < ContourRecorder::kColumns && k == std::trunc(k))
       return number(contour.value(static_cast<size_t>(i), static_cast<int>(k), s.plane_indices()));
   }
-  if (n == "$P_S" || n == "$AA_S") return Value(s.spindle_rpm);
+  if (n == "$P_S" || n == "$AA_S") {
+    // [n]: spindle n; without an index (or [0]) the master spindle.
+    const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
+    const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
+    if (spindle < 0) return std::nullopt;
+    return Value(n == "$P_S" ? interpreter_.programmed_spindle_speed(spindle) : interpreter_.actual_spindle_speed(spindle));
+  }
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
   if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);

@@ -73,6 +73,10 @@ class Interpreter {
   ToolState& tools() { return tools_; }
   bool ended() const { return ended_; }
   int master_spindle() const { return master_spindle_; }  // MD20090, SETMS(n)
+  // $P_S[n] / $AA_S[n] of spindle n (0: the master): the last programmed speed, and the speed it
+  // turns at in a dry run (0 when stopped, negative under M4; interpreter_spindle.cpp).
+  double programmed_spindle_speed(int spindle) const;
+  double actual_spindle_speed(int spindle) const;
   // A lower bound of the time so far (path length / feed, dwells, clock polls).
   double nominal_time_s() const { return nominal_time_s_ + clock_wait_s_; }
   // A read of the run clock ($AC_OPERATING_TIME, $AC_TIMER, $A_SECOND ...) on program line `line`

@@ -1,11 +1,13 @@
 // The programmable spindle speed limits G25 S / G26 S and the dwell in spindle revolutions
 // G4 S / G4 S<n>= (Fundamentals, "Programmable spindle speed limitation (G25, G26)" and
-// "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits").
+// "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits"), and the spindle speeds
+// $P_S / $AA_S read back.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <cstdio>
 
+#include "interp/constant_cutting_speed.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
 
@@ -131,6 +133,37 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
   state_.spindle_rpm = next.rpm;
   state_.spindle = next.state;
   master_spindle_ = n;
+}
+
+double Interpreter::programmed_spindle_speed(int spindle) const {
+  if (spindle == 0 || spindle == master_spindle_) return state_.spindle_rpm;
+  const auto it = other_spindles_.find(spindle);
+  return it == other_spindles_.end() ? 0.0 : it->second.rpm;
+}
+
+double Interpreter::actual_spindle_speed(int spindle) const {
+  // In a dry run the spindle turns at its programmed speed at once (MD35500 run-up not waited
+  // for); M5 and SPOS stop it. The sign follows the direction, as the control's actual value.
+  const bool master = spindle == 0 || spindle == master_spindle_;
+  SpindleState state = state_.spindle;
+  if (!master) {
+    const auto it = other_spindles_.find(spindle);
+    if (it == other_spindles_.end()) return 0.0;
+    state = it->second.state;
+  }
+  if (state == SpindleState::Stopped) return 0.0;
+  double rpm = programmed_spindle_speed(spindle);
+  if (master && state_.constant_cutting_speed) {
+    // G96: S is the cutting speed; the spindle turns at what it gives at the tool's diameter
+    // now (LIMS, G26 and MD35100 above, G25 below), as spindle_speed() plans it.
+    const Eigen::Vector3d tip = state_.frames.total(false).to_inner(position_ - length_applied_);
+    double max_rpm = profile_.max_spindle_speed_rpm;
+    if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
+    if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
+    const double x = tip[state_.cutting_speed_axis];
+    rpm = constant_cutting_speed_rpm(cutting_speed_mm_min(rpm), x, x, spindle_min_rpm_, max_rpm);
+  }
+  return state == SpindleState::CounterClockwise ? -rpm : rpm;
 }
 
 }  // namespace drycut::interp

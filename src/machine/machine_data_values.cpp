@@ -10,6 +10,12 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MN_SCALING_SYSTEM_IS_METRIC"] = p.base_unit_inch ? 0 : 1;  // MD10240
   md["$MN_SYSCLOCK_CYCLE_TIME"] = p.ipo_cycle_s;  // MD10050 (with MD10070 = 1)
   md["$MN_IPO_SYSCLOCK_TIME_RATIO"] = 1;
+  md["$MC_SPIND_DEF_MASTER_SPIND"] = p.master_spindle;  // MD20090
+  // Data drycut does not model, at their documented defaults (machine data lists of the
+  // Function Manuals): builders' macros read them to size loops and tables.
+  md["$MN_INT_INCR_PER_MM"] = 1000;   // MD10200 INT_INCR_PER_MM
+  md["$MN_INT_INCR_PER_DEG"] = 1000;  // MD10210 INT_INCR_PER_DEG
+  md["$MC_MM_NUM_R_PARAM"] = 100;     // MD28050 MM_NUM_R_PARAM
   md["$MC_MAX_PATH_JERK"] = p.path_jerk_mm_s3 / 1000.0;                 // MD20600
   md["$MC_CURV_EFFECT_ON_PATH_ACCEL"] = p.curv_effect_on_path_accel;    // MD20602
   md["$MC_CUBIC_SPLINE_BLOCKS"] = p.cubic_spline_blocks;                // MD20160
@@ -75,6 +81,7 @@ std::map<std::string, std::string, std::less<>> machine_data_texts(const Machine
   }
   for (const AxisData& a : p.extra_axes) channel_axis(a.name);
   md["$MC_CHAN_NAME"] = "CHAN1";  // MD20000 CHAN_NAME: the default name of channel 1
+  if (!p.diameter_axis.empty()) md["$MC_DIAMETER_AX_DEF"] = p.diameter_axis;  // MD20100
   return md;
 }
 

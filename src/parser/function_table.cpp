@@ -42,7 +42,7 @@ constexpr std::array kFunctions{
     FunctionInfo{"SPRINT", F::Sprint, 1, 20, "formatted string: %D %I %F %.nF %E %S %C %B %X"},
     FunctionInfo{"AXNAME", F::AxName, 1, 1, "the axis a string names"},
     FunctionInfo{"AXSTRING", F::AxString, 1, 1, "the name of an axis as a string"},
-    FunctionInfo{"ISVAR", F::IsVar, 1, 1, "TRUE when the string names a known variable"},
+    FunctionInfo{"ISVAR", F::IsVar, 1, 1, "TRUE when the string names a known variable (an index within the array)"},
     FunctionInfo{"ISFILE", F::IsFile, 1, 1, "TRUE when a program file of that name is in drycut's folders"},
     FunctionInfo{"STRINGIS", F::StringIs, 1, 1, "what the language knows a name as: 0, 2xx (201 address ... 211 LUD), 400"},
     FunctionInfo{"SPI", F::Spindle, 1, 1, "the axis of spindle n (SP<n>), for $AA_S[SPI(1)] and axis-indexed words"},

@@ -125,7 +125,7 @@ std::vector<LanguageFeature> language_features() {
   }
   for (std::string_view a : all_addresses()) add(out, "Addresses", std::string(a), Support::Modelled, "");
   const std::array<std::pair<const char*, const char*>, 6> sysvars{{
-      {"$MN_ $MC_ $MA_[axis] $MM_", "machine data: the profile's value (its fields under their MD names, and its machine_data map); unknown: 0 and warning 990007"},
+      {"$MN_ $MC_ $MA_[axis] $MM_", "machine data: the profile's value (its fields under their MD names, and its machine_data map), a few unmodelled data at their documented defaults; unknown: 0 and warning 990007"},
       {"$SN_ $SC_ $SA_[axis]", "setting data: as machine data"},
       {"$P_ $AA_ $AC_ $VA_ $A_", "programmed and actual state from the interpreter ($P_GG[g], $P_EP[ax], $AA_IM[ax], $P_F, $P_TOOLNO, $P_TOOL, $P_TOOLR, $P_AD[n] ...); unknown names: 0"},
       {"$A_IN $A_OUT $A_INA $A_OUTA $A_DBB $A_DBW $A_DBD $A_DBR", "inputs, outputs, PLC data: the profile's machine_data map, default 0"},

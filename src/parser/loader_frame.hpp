@@ -58,6 +58,7 @@ class ProgramLoader::Scope : public VariableSource {
   Value circle_data(const ExprNode& call, const ExprPool& pool) const;
   // The environment functions that need the loader (loader_scope.cpp).
   Value isvar_value(const ExprNode& call, std::span<const Value> args) const;
+  static bool index_within(const Variable& v, std::string_view index_text);
   Value isfile_value(const ExprNode& call, std::span<const Value> args) const;
   Value stringis_value(const ExprNode& call, std::span<const Value> args) const;
   Value nametoint_value(const ExprNode& call, std::span<const Value> args) const;

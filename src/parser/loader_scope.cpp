@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "parser/ascii_case.hpp"
 #include "parser/line_error.hpp"
@@ -187,17 +188,52 @@ Value ProgramLoader::Scope::environment_function(const ExprNode& call, std::span
 }
 
 Value ProgramLoader::Scope::isvar_value(const ExprNode& call, std::span<const Value> args) const {
+  // Job Planning, "Check existence of a variable (ISVAR)": TRUE when the name is a variable the
+  // control knows and, written with an index, the index lies within the array.
   ProgramLoader& l = loader_;
   if (args.empty() || args[0].is_number())
     throw LineError(12150, call.column, "ISVAR needs a name as a string");
-  std::string name = args[0].text;
-  for (char& c : name)
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  if (const size_t b = name.find('['); b != std::string::npos) name.resize(b);
-  const bool known = l.find_variable(name) != nullptr ||
-                     (!name.empty() && name[0] == '$' && l.system_variables_.is_known(name)) ||
-                     (name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1)));
-  return Value(known ? 1.0 : 0.0);
+  std::string name = upper_ascii(args[0].text);
+  std::string index_text;
+  if (const size_t b = name.find('['); b != std::string::npos) {
+    const size_t e = name.find(']', b);
+    index_text = name.substr(b + 1, e == std::string::npos ? std::string::npos : e - b - 1);
+    name.resize(b);
+  }
+  if (const Variable* v = l.find_variable(name)) return Value(index_within(*v, index_text) ? 1.0 : 0.0);
+  if (name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1))) return Value(1.0);
+  if (name.empty() || name[0] != '$' || !l.system_variables_.is_known(name)) return Value(0.0);
+  const SystemVariableClass c = classify_system_variable(name);
+  if (c == SystemVariableClass::MachineData || c == SystemVariableClass::SettingData) {
+    // Machine and setting data the profile gives are known; others may exist on the machine
+    // the program was written for (options, software versions): TRUE, with a warning.
+    const auto hit = l.options_.machine_data.lower_bound(name);
+    const bool given = (hit != l.options_.machine_data.end() && hit->first.rfind(name, 0) == 0 &&
+                        (hit->first.size() == name.size() || hit->first[name.size()] == '[')) ||
+                       l.options_.machine_data_texts.count(name) > 0;
+    if (!given) l.warn(990007, "ISVAR(\"" + name + "\"): " + std::string(system_variable_class_name(c)) +
+                                   " not in the machine profile: TRUE assumed", call.column);
+  }
+  return Value(1.0);
+}
+
+// An ISVAR index ("3", "1,2"): as many whole numbers as the array has dimensions, each below
+// its size; no index at all names the variable itself.
+bool ProgramLoader::Scope::index_within(const Variable& v, std::string_view text) {
+  if (text.empty()) return true;
+  int k = 0;
+  size_t pos = 0;
+  while (pos <= text.size()) {
+    const size_t comma = std::min(text.find(',', pos), text.size());
+    std::string_view part = text.substr(pos, comma - pos);
+    while (!part.empty() && part.front() == ' ') part.remove_prefix(1);
+    while (!part.empty() && part.back() == ' ') part.remove_suffix(1);
+    if (k >= v.rank() || part.empty() || !all_digits(part)) return false;
+    if (part.size() > 9 || std::stoul(std::string(part)) >= v.dim(k)) return false;
+    ++k;
+    pos = comma + 1;
+  }
+  return k == v.rank();
 }
 
 Value ProgramLoader::Scope::isfile_value(const ExprNode& call, std::span<const Value> args) const {
@@ -260,7 +296,11 @@ void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t 
     const Value c = eval_value(value);
     if (c.is_text() && c.text.size() != 1) throw LineError(12150, column, "one character expected");
     if (!c.is_text() && !c.is_number()) throw LineError(12150, column, "one character expected");
-    text[character_position(text, idx[0], column)] = c.is_text() ? c.text[0] : static_cast<char>(c.number);
+    const size_t at = character_position(text, idx[0], column);
+    text[at] = c.is_text() ? c.text[0] : static_cast<char>(c.number);
+    // The 0 character ends a string (Job Planning, "String operations": a character replaced by
+    // 0 truncates the string there).
+    if (text[at] == '\0') text.resize(at);
     v.set(e, Value::of_text(text), column);
     return;
   }
