@@ -96,6 +96,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   apply_addresses(ctx);
   apply_axis_words(ctx);
   apply_m_words(ctx);
+  note_spindle_change();
   // G63 (tapping with a compensating chuck; Fundamentals, "Tapping with compensating chuck
   // (G63)") is non-modal: its block runs linear at F (at a fixed 100 % override, as drycut plans
   // anyway), and the motion command in force before it (often the G0 of the approach) applies
@@ -571,6 +572,7 @@ void Interpreter::emit_clock_wait(const BlockContext& ctx) {
 }
 
 void Interpreter::emit(PathElement&& element) {
+  if (run_up_.pending && element.is_motion() && !element.rapid) wait_for_spindle_speed(element);
   if (compensation_selection_pending_ && element.is_motion() && element.curve) defer_compensation_selection(element);
   add_nominal_time(element);
   if (element.is_motion() && element.curve && element.curve->length() > 0) {

@@ -323,6 +323,26 @@ class Interpreter {
     double from_rpm = 0.0;
   };
   SpindleBraking master_braking_;
+  // Spindle run-up (MD35500, interpreter_spindle.cpp): after a programmed change of the master
+  // spindle's speed it ramps at MD35200 from the speed it had to the new set speed (signed: M4
+  // negative); the first path block with feed waits until it is in the set range (MD35150).
+  struct SpindleCommand {
+    SpindleState state = SpindleState::Stopped;
+    double value = 0.0;  // S, or the cutting speed under G96
+    bool constant_cutting_speed = false;
+    int master = 1;
+    bool operator==(const SpindleCommand&) const = default;
+  };
+  struct SpindleRunUp {
+    double since_s = 0.0;  // the nominal clock at the change
+    double from_rpm = 0.0;
+    double to_rpm = 0.0;
+    bool pending = false;  // no path block with feed has started since
+  };
+  SpindleCommand spindle_command_;
+  SpindleRunUp run_up_;
+  void note_spindle_change();
+  void wait_for_spindle_speed(const PathElement& next);
   Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)

@@ -153,7 +153,12 @@ double Interpreter::actual_spindle_speed(int spindle) const {
   }
   if (state == SpindleState::Stopped) return 0.0;
   double rpm = programmed_spindle_speed(spindle);
-  if (master && state_.constant_cutting_speed) {
+  if (master && !state_.constant_cutting_speed) {
+    // The set speed within G26/G25 and MD35100, as spindle_speed() limits it.
+    if (spindle_max_rpm_ > 0) rpm = std::min(rpm, spindle_max_rpm_);
+    if (spindle_min_rpm_ > 0 && rpm > 0) rpm = std::max(rpm, spindle_min_rpm_);
+    rpm = std::min(rpm, profile_.max_spindle_speed_rpm);
+  } else if (master) {
     // G96: S is the cutting speed; the spindle turns at what it gives at the tool's diameter
     // now (LIMS, G26 and MD35100 above, G25 below), as spindle_speed() plans it.
     const Eigen::Vector3d tip = state_.frames.total(false).to_inner(position_ - length_applied_);
@@ -164,6 +169,41 @@ double Interpreter::actual_spindle_speed(int spindle) const {
     rpm = constant_cutting_speed_rpm(cutting_speed_mm_min(rpm), x, x, spindle_min_rpm_, max_rpm);
   }
   return state == SpindleState::CounterClockwise ? -rpm : rpm;
+}
+
+void Interpreter::note_spindle_change() {
+  // Function Manual S1, "Spindle in setpoint range": with MD35500 = 1 the path interpolation
+  // waits at the start of a traversing block after a programmed speed change until the actual
+  // speed is within MD35150 of the set speed. A G96 speed that follows the diameter is no
+  // programmed change. The ramp runs from wherever the last one had come to.
+  const SpindleCommand now{state_.spindle, state_.spindle_rpm, state_.constant_cutting_speed, master_spindle_};
+  if (now == spindle_command_) return;
+  spindle_command_ = now;
+  const double accel_rpm_s = profile_.spindle_speedctrl_accel_rev_s2 * 60.0;
+  const double ramp = run_up_.to_rpm - run_up_.from_rpm;
+  const double reached = std::min(std::abs(ramp), accel_rpm_s * (nominal_time_s_ - run_up_.since_s));
+  const double speed = run_up_.from_rpm + std::copysign(reached, ramp);
+  run_up_ = {nominal_time_s_, speed, actual_spindle_speed(0), profile_.spindle_on_speed_at_ipo_start > 0};
+}
+
+void Interpreter::wait_for_spindle_speed(const PathElement& next) {
+  // Called for the first element with feed after a speed change (G0 does not wait: its block
+  // runs while the spindle comes up, drycut's reading of MD35500). A stopped spindle holds
+  // nothing back. The wait is a dwell before the block: the ramp time into the set range less
+  // the nominal time (a lower bound of the planned time) since the change.
+  run_up_.pending = false;
+  if (recorder_.active() || run_up_.to_rpm == 0.0) return;
+  const double tolerance = profile_.spindle_des_velo_tol * std::abs(run_up_.to_rpm);
+  const double ramp_s = std::max(0.0, std::abs(run_up_.to_rpm - run_up_.from_rpm) - tolerance) /
+                        (profile_.spindle_speedctrl_accel_rev_s2 * 60.0);
+  const double wait_s = ramp_s - (nominal_time_s_ - run_up_.since_s);
+  if (wait_s <= 1e-9) return;
+  PathElement e;
+  e.kind = ElementKind::Dwell;
+  e.source = next.source;
+  e.dwell_s = wait_s;
+  e.label = "waiting for the spindle speed (MD35500)";
+  emit(std::move(e));
 }
 
 }  // namespace drycut::interp

@@ -476,6 +476,10 @@ class Importer {
               {"$MA_GEAR_STEP_POSCTRL_ACCEL[1," + s + "]", "$MA_GEAR_STEP_POSCTRL_ACCEL[0," + s + "]",
                "$MA_GEAR_STEP_POSCTRL_ACCEL[" + s + "]"},
               1.0, p.spindle_posctrl_accel_rev_s2, who + " MD35210 GEAR_STEP_POSCTRL_ACCEL", "30 rev/s²");
+    map_value("path.spindle_des_velo_tol", {"$MA_SPIND_DES_VELO_TOL[" + s + "]"}, 1.0, p.spindle_des_velo_tol,
+              who + " MD35150 SPIND_DES_VELO_TOL", "0.1");
+    map_int("path.spindle_on_speed_at_ipo_start", {"$MA_SPIND_ON_SPEED_AT_IPO_START[" + s + "]"},
+            p.spindle_on_speed_at_ipo_start, who + " MD35500 SPIND_ON_SPEED_AT_IPO_START");
   }
 
   // MD20150 holds an index per G group; drycut does not translate the indices (yet) and starts

@@ -58,6 +58,12 @@ void read_path(const json& node, MachineProfile& p) {
     p.spindle_posctrl_accel_rev_s2 = require_positive(*v, r.key_path("spindle_posctrl_accel_rev_s2"));
   if (auto v = r.number("spindle_speedctrl_accel_rev_s2"))
     p.spindle_speedctrl_accel_rev_s2 = require_positive(*v, r.key_path("spindle_speedctrl_accel_rev_s2"));
+  if (auto v = r.integer("spindle_on_speed_at_ipo_start")) {
+    if (*v < 0 || *v > 2) r.fail("spindle_on_speed_at_ipo_start", "must be 0, 1 or 2");
+    p.spindle_on_speed_at_ipo_start = static_cast<int>(*v);
+  }
+  if (auto v = r.number("spindle_des_velo_tol"))
+    p.spindle_des_velo_tol = require_range(*v, 0.0, 1.0, r.key_path("spindle_des_velo_tol"));
   r.reject_unknown_keys();
   if (!jerk_given) {
     // No path jerk given: the smallest axis jerk is the safe stand-in.
@@ -305,7 +311,9 @@ std::string profile_to_json(const MachineProfile& p) {
                   {"master_spindle", p.master_spindle},
                   {"spindle_posctrl_velo_rpm", p.spindle_posctrl_velo_rpm},
                   {"spindle_posctrl_accel_rev_s2", p.spindle_posctrl_accel_rev_s2},
-                  {"spindle_speedctrl_accel_rev_s2", p.spindle_speedctrl_accel_rev_s2}};
+                  {"spindle_speedctrl_accel_rev_s2", p.spindle_speedctrl_accel_rev_s2},
+                  {"spindle_on_speed_at_ipo_start", p.spindle_on_speed_at_ipo_start},
+                  {"spindle_des_velo_tol", p.spindle_des_velo_tol}};
   json offsets = json::object();
   for (const auto& [name, v] : p.work_offsets) offsets[name] = {v.x(), v.y(), v.z()};
   json rotations = json::object();

@@ -112,7 +112,12 @@ struct MachineProfile {
   int master_spindle = 1;                       // MD20090 SPIND_DEF_MASTER_SPIND (S1=, M1=3 address it)
   double spindle_posctrl_velo_rpm = 500;        // MD35300 SPIND_POSCTRL_VELO (SPOS)
   double spindle_posctrl_accel_rev_s2 = 30;     // MD35210 GEAR_STEP_POSCTRL_ACCEL (SPOS)
-  double spindle_speedctrl_accel_rev_s2 = 30;   // MD35200 GEAR_STEP_SPEEDCTRL_ACCEL (braking before SPOS)
+  double spindle_speedctrl_accel_rev_s2 = 30;   // MD35200 GEAR_STEP_SPEEDCTRL_ACCEL (run-up, braking)
+  // MD35500 SPIND_ON_SPEED_AT_IPO_START: after a programmed speed change the path (not G0) starts
+  // only once the spindle is in its set range (1, 2), or at once (0); MD35150 SPIND_DES_VELO_TOL
+  // is that range (a share of the set speed).
+  int spindle_on_speed_at_ipo_start = 1;
+  double spindle_des_velo_tol = 0.1;
 
   // Interpreter data.
   std::vector<std::string> reset_gcodes;        // MD20150 analogue: G1 G17 G40 G500 G64 SOFT BNAT ...

@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 66> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 68> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -38,6 +38,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 66> kNames{{
     {"spindle_posctrl_velo_rpm", "MD35300 SPIND_POSCTRL_VELO"},
     {"spindle_posctrl_accel_rev_s2", "MD35210 GEAR_STEP_POSCTRL_ACCEL"},
     {"spindle_speedctrl_accel_rev_s2", "MD35200 GEAR_STEP_SPEEDCTRL_ACCEL"},
+    {"spindle_on_speed_at_ipo_start", "MD35500 SPIND_ON_SPEED_AT_IPO_START"},
+    {"spindle_des_velo_tol", "MD35150 SPIND_DES_VELO_TOL"},
     {"reset_gcodes", "MD20150 GCODE_RESET_VALUES"},
     {"work_offsets", "$P_UIFR (settable frames)"},
     {"work_offset_rotations", "$P_UIFR rotations"},
