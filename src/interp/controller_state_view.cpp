@@ -91,6 +91,14 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
   }
 }
 
+std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<const Value> indices) const {
+  // $P_S[n] / $AA_S[n]: spindle n; without an index (or [0]) the master spindle.
+  const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
+  const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
+  if (spindle < 0) return std::nullopt;
+  return Value(actual ? interpreter_.actual_spindle_speed(spindle) : interpreter_.programmed_spindle_speed(spindle));
+}
+
 std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece) const {
   if (indices.size() != 1) return std::nullopt;
   const std::string& axis = indices[0].text;
@@ -172,13 +180,7 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
         k < ContourRecorder::kColumns && k == std::trunc(k))
       return number(contour.value(static_cast<size_t>(i), static_cast<int>(k), s.plane_indices()));
   }
-  if (n == "$P_S" || n == "$AA_S") {
-    // [n]: spindle n; without an index (or [0]) the master spindle.
-    const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
-    const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
-    if (spindle < 0) return std::nullopt;
-    return Value(n == "$P_S" ? interpreter_.programmed_spindle_speed(spindle) : interpreter_.actual_spindle_speed(spindle));
-  }
+  if (n == "$P_S" || n == "$AA_S") return spindle_speed(n == "$AA_S", indices);
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
   if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);

@@ -29,6 +29,7 @@ class InterpreterStateView : public parser::ControllerStateView {
   std::optional<parser::Value> tool_presence(std::string_view name, std::span<const parser::Value> indices) const;
   // $P_PFRAME, $P_UIFR[n], $P_IFRAME, $P_ACTFRAME ... whole or [axis, component] (frame_variable_reads.cpp).
   std::optional<parser::Value> frame_variable(std::string_view name, std::span<const parser::Value> indices) const;
+  std::optional<parser::Value> spindle_speed(bool actual, std::span<const parser::Value> indices) const;
   std::optional<double> axis_position(std::span<const parser::Value> indices, bool workpiece) const;
   std::optional<double> tool_datum(int parameter, std::span<const parser::Value> indices) const;
   static int settable_frame_number(const std::string& work_offset);  // G54 -> 1 ...
