@@ -575,6 +575,7 @@ void Interpreter::emit(PathElement&& element) {
   if (run_up_.pending && element.is_motion() && !element.rapid) wait_for_spindle_speed(element);
   if (compensation_selection_pending_ && element.is_motion() && element.curve) defer_compensation_selection(element);
   add_nominal_time(element);
+  if (element.kind == ElementKind::ToolChange) note_tool_change_stops_spindle();
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;
     has_last_tangent_ = true;
@@ -601,19 +602,34 @@ void Interpreter::defer_compensation_selection(PathElement& element) {
 }
 
 void Interpreter::add_nominal_time(const PathElement& e) {
-  // A lower bound of the planned time (no ramps, no corners): enough for timers a program reads
-  // while the planner is still behind the interpreter.
+  // An estimate of the planned time (feed moves without ramps or corners, rapid moves from rest
+  // to rest): enough for timers a program reads while the planner is still behind the
+  // interpreter, and for the spindle run-up that G0 moves overlap.
   if (e.kind == ElementKind::Dwell) {
     nominal_time_s_ += e.dwell_s;
     return;
   }
-  if (!e.is_motion() || !e.curve) return;
-  double v = e.feed_mm_s;
-  if (e.rapid) {
-    v = 0;
-    for (const auto& axis : profile_.axes) v = v > 0 ? std::min(v, axis.max_velocity_mm_s) : axis.max_velocity_mm_s;
+  if (e.kind == ElementKind::ToolChange) {
+    nominal_time_s_ += profile_.tool_change_time_s;
+    return;
   }
-  if (v > 0) nominal_time_s_ += e.curve->length() / v;
+  if (!e.is_motion() || !e.curve) return;
+  const double length = e.curve->length();
+  if (!e.rapid) {
+    if (e.feed_mm_s > 0) nominal_time_s_ += length / e.feed_mm_s;
+    return;
+  }
+  // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest):
+  // the slowest axis's velocity and G0 acceleration, a trapezoid or, when too short, a triangle.
+  double v = 0, a = 0;
+  for (const auto& axis : profile_.axes) {
+    v = v > 0 ? std::min(v, axis.max_velocity_mm_s) : axis.max_velocity_mm_s;
+    const double accel = axis.max_accel_mm_s2 * profile_.g0_accel_factor;
+    a = a > 0 ? std::min(a, accel) : accel;
+  }
+  if (v <= 0) return;
+  if (a <= 0) nominal_time_s_ += length / v;
+  else nominal_time_s_ += length >= v * v / a ? length / v + v / a : 2.0 * std::sqrt(length / a);
 }
 
 void Interpreter::emit_control(BlockContext& ctx, ElementKind kind, std::string label) {

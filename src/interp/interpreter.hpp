@@ -342,6 +342,7 @@ class Interpreter {
   SpindleCommand spindle_command_;
   SpindleRunUp run_up_;
   void note_spindle_change();
+  void note_tool_change_stops_spindle();
   void wait_for_spindle_speed(const PathElement& next);
   Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;

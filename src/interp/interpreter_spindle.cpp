@@ -206,4 +206,11 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   emit(std::move(e));
 }
 
+void Interpreter::note_tool_change_stops_spindle() {
+  // A tool change stops and orients the spindle for the changer (the machine's M6 cycle): the
+  // next programmed speed, even the same S M3 again, ramps from standstill after the change.
+  run_up_ = {nominal_time_s_, 0.0, 0.0, false};
+  spindle_command_ = SpindleCommand{SpindleState::Stopped, 0.0, false, master_spindle_};
+}
+
 }  // namespace drycut::interp
