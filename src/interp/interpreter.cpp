@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <numbers>
 #include <optional>
 
@@ -697,9 +698,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   refuse_compensation_change_on_curve(ctx, has_axis || full_circle);
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
-  // The dwell's words are checked before the block moves: a refused block adds nothing.
-  std::optional<PathElement> dwell;
-  if (ctx.dwell) dwell = dwell_element(ctx);
+  // The dwell's words are checked before the block moves: a refused block adds nothing. (On
+  // the heap: an empty std::optional<PathElement> still clears its storage on every block.)
+  std::unique_ptr<PathElement> dwell;
+  if (ctx.dwell) dwell = std::make_unique<PathElement>(dwell_element(ctx));
   emit_axis_waits(ctx);
   std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
 
