@@ -255,6 +255,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string_view n = a.name;  // compared with literals inline, without strlen
+    // X, Y, Z in a linear value mode (most words of a CAM program) are target_position's alone:
+    // no rule below takes them, unless an extra axis bears the name.
+    if (axis_index(n) >= 0 && parser::is_linear_value_mode(a.mode) && extra_axes_.index(n) < 0) continue;
     if (apply_smoothing_address(ctx, a)) continue;
     if (apply_corner_address(ctx, a)) continue;
     if (n == "F") {
