@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <numbers>
 #include <optional>
 
@@ -262,6 +263,9 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string_view n = a.name;  // compared with literals inline, without strlen
+    // X, Y, Z in a linear value mode (most words of a CAM program) are target_position's alone:
+    // no rule below takes them, unless an extra axis bears the name.
+    if (axis_index(n) >= 0 && parser::is_linear_value_mode(a.mode) && extra_axes_.index(n) < 0) continue;
     if (apply_smoothing_address(ctx, a)) continue;
     if (apply_corner_address(ctx, a)) continue;
     if (n == "F") {
@@ -722,9 +726,10 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   refuse_compensation_change_on_curve(ctx, has_axis || full_circle);
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
-  // The dwell's words are checked before the block moves: a refused block adds nothing.
-  std::optional<PathElement> dwell;
-  if (ctx.dwell) dwell = dwell_element(ctx);
+  // The dwell's words are checked before the block moves: a refused block adds nothing. (On
+  // the heap: an empty std::optional<PathElement> still clears its storage on every block.)
+  std::unique_ptr<PathElement> dwell;
+  if (ctx.dwell) dwell = std::make_unique<PathElement>(dwell_element(ctx));
   emit_axis_waits(ctx);
   std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
 

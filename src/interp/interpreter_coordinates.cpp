@@ -27,7 +27,9 @@ Vector3d Interpreter::tool_length_vector() const {
     return length;
   }
   length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
-  if (tool_orientation_.isIdentity()) return length;
+  // No swivel (nearly every block): the exact identity is answered without isIdentity's
+  // tolerance test of nine coefficients.
+  if (tool_orientation_ == Eigen::Matrix3d::Identity() || tool_orientation_.isIdentity()) return length;
   // A swivel head (TCOABS/TCOFR): the length along the swivelled plane normal.
   const Vector3d direction = tool_orientation_ * Vector3d::Unit(state_.plane_normal_axis());
   return direction.normalized() * tools_.offsets().length_mm;

@@ -55,7 +55,7 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
 PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   PathElement e = element_template(ctx, ElementKind::Line);
   e.rapid = state_.motion == MotionMode::Rapid;
-  e.label = e.rapid ? "G0" : std::string(motion_mode_name(state_.motion));
+  e.label.assign(e.rapid ? std::string_view("G0") : motion_mode_name(state_.motion));
   e.curve = std::make_shared<geometry::LineCurve>(position_, target);
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), target - position_);
   return e;

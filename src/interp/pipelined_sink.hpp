@@ -20,6 +20,13 @@
 // - An alarm of the producer itself comes from a later block than every element it handed over:
 //   drain() lets the worker finish those first, and an alarm they raise takes precedence.
 // - Any other exception (I/O, bad_alloc) on the worker is rethrown to the producer as it is.
+//
+// Consumed batches go back to the producer, which refills them: their vectors keep their
+// capacity (a fresh 128-element vector is a large block whose malloc and free consolidate the
+// allocator's bins), and what the downstream left in the moved-from elements (the planner hands
+// back the block text and curve of the elements it retired) is released slot by slot as the
+// producer assigns the next elements: on the thread that allocated it, between the allocations
+// of the elements that follow, so that malloc's per-thread cache gives it out again at once.
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
@@ -61,9 +68,8 @@ class PipelinedSink final : public ElementSink {
       rethrow_fatal();
       throw failure_->error;
     }
-    batch_.elements.push_back(std::move(element));
-    batch_.marks.push_back(mark_());
-    if (batch_.elements.size() >= kBatch) hand_over();
+    put(std::move(element));
+    if (batch_.count >= kBatch) hand_over();
   }
 
   // Hands over what is left, waits for the worker to end, then finishes the downstream on this
@@ -99,18 +105,37 @@ class PipelinedSink final : public ElementSink {
 
  private:
   struct Batch {
+    // Elements [0, count) are handed over; those after them are moved-from leftovers of the
+    // batch's earlier round, overwritten as it is refilled.
     std::vector<PathElement> elements;
     std::vector<Mark> marks;
+    size_t count = 0;
   };
 
+  void put(PathElement&& element) {
+    if (batch_.count < batch_.elements.size()) {
+      batch_.elements[batch_.count] = std::move(element);  // releases the leftover here
+      batch_.marks[batch_.count] = mark_();
+    } else {
+      batch_.elements.push_back(std::move(element));
+      batch_.marks.push_back(mark_());
+    }
+    ++batch_.count;
+  }
+
   void hand_over() {
-    if (batch_.elements.empty() || !worker_.joinable()) return;
+    if (batch_.count == 0 || !worker_.joinable()) return;
     std::unique_lock lock(mutex_);
     room_.wait(lock, [this] { return queue_.size() < kBatchesInFlight; });
     queue_.push_back(std::move(batch_));
+    batch_ = Batch{};
+    if (!spent_.empty()) {
+      batch_ = std::move(spent_.back());
+      spent_.pop_back();
+    }
     lock.unlock();
     work_ready_.notify_one();
-    batch_ = Batch{};
+    batch_.count = 0;
     batch_.elements.reserve(kBatch);
     batch_.marks.reserve(kBatch);
   }
@@ -131,13 +156,14 @@ class PipelinedSink final : public ElementSink {
       {
         std::lock_guard lock(mutex_);
         busy_ = false;
+        spent_.push_back(std::move(batch));
       }
       idle_.notify_all();
     }
   }
 
   void consume_batch(Batch& batch) {
-    for (size_t i = 0; i < batch.elements.size(); ++i) {
+    for (size_t i = 0; i < batch.count; ++i) {
       try {
         downstream_.consume(std::move(batch.elements[i]));
       } catch (const AlarmError& e) {
@@ -185,9 +211,10 @@ class PipelinedSink final : public ElementSink {
 
   bool delivered_ = false;  // the producer has been told of the failure
 
-  std::mutex mutex_;  // guards the queue and the two flags after it
+  std::mutex mutex_;  // guards the queue, the spent batches and the two flags after them
   std::condition_variable work_ready_, room_, idle_;
   std::deque<Batch> queue_;
+  std::vector<Batch> spent_;  // consumed batches, back for the producer to refill
   bool busy_ = false, closing_ = false;
 
   // Written by the worker only, before it sets failed_ (release); the producer reads them after

@@ -267,6 +267,11 @@ bool Planner::discretise(const WindowElement& w, double length, double& grid) {
 
 void Planner::append_motion(interp::PathElement&& element) {
   WindowElement& w = new_window_element();
+  // A spare still holds the block reference and curve of the element it carried (retire_front):
+  // they go back with the caller's moved-from element, to be released on the thread that made
+  // them (the producer's, interp/pipelined_sink.hpp), where malloc takes them up again at once.
+  BlockRef spare_source = std::move(w.element.source);
+  geometry::CurvePtr spare_curve = std::move(w.element.curve);
   w.element = std::move(element);
   const double length = w.element.path_length();
   w.dynamics = make_element_dynamics(w.element, length, profile_);
@@ -333,6 +338,8 @@ void Planner::append_motion(interp::PathElement&& element) {
   peak_nodes_ = std::max(peak_nodes_, nodes_.size());
   peak_elements_ = std::max(peak_elements_, elements_.size());
   while (motion_in_window_ > static_cast<size_t>(profile_.lookahead_blocks)) commit_front();
+  element.source = std::move(spare_source);
+  element.curve = std::move(spare_curve);
 }
 
 double Planner::extend(RampAnchor& anchor, double v_here, const Segment& seg) {
@@ -542,6 +549,7 @@ void Planner::report_commit(WindowElement& w, CommitTally& tally) {
   timing.compress_deviation_mm = w.element.compress_deviation_mm;
   timing.smoothing_deviation_mm = w.element.smoothing_deviation_mm;
   observer_.on_block(timing);
+  w.element.source = std::move(timing.source);  // kept by the spare (append_motion)
 }
 
 // Totals, the lowest and highest cutting feed and the feed dips (feeds already at the contour).
@@ -564,12 +572,12 @@ void Planner::add_to_summary(const interp::PathElement& e, bool moved, const Com
   }
 }
 
-// The committed element leaves the window (kept as a spare for reuse while there is room).
+// The committed element leaves the window (kept as a spare for reuse while there is room; it
+// keeps its block reference and curve until append_motion hands them back).
 void Planner::retire_front(WindowElement& w) {
   if (w.segment_count > 0) --motion_in_window_;
   if (last_motion_ == &w) last_motion_ = nullptr;
   if (spare_elements_.size() < kSpareElements) {
-    w.element.curve.reset();  // the geometry is not kept alive by a spare
     spare_elements_.push_back(std::move(elements_.front()));
   }
   elements_.pop_front();

@@ -45,10 +45,10 @@
 //    axis acceleration × SOFT/G0 factor, × (1 - share) where the path is curved) and, under
 //    SOFT, j_t = min(path jerk, min_i j_i/|t_i|); under BRISK j_t = infinity.
 //
-// 3. Window. The planner keeps at most `lookahead_blocks` motion elements (nodes, segments
-//    and the elements themselves in three deques). The LAST node of the window is assumed to
-//    end at rest (Limit::Lookahead) as on the control, so memory never grows with program
-//    length. When a new element arrives the old last node becomes an ordinary junction.
+// 3. Window. The planner keeps at most `lookahead_blocks` motion elements (nodes and segments
+//    in ring buffers, the elements themselves in a deque). The LAST node of the window is
+//    assumed to end at rest (Limit::Lookahead) as on the control, so memory never grows with
+//    program length. When a new element arrives the old last node becomes an ordinary junction.
 //
 // 4. Backward pass (run after each append, from the new last node towards the front).
 //    b[last] = 0; b[i] = min(limit[i], reach from b[i+1] backwards over segment i).
@@ -133,6 +133,7 @@
 #include "motion/path_constraints.hpp"
 #include "motion/plan_result.hpp"
 #include "motion/positioning_axes.hpp"
+#include "motion/ring_buffer.hpp"
 #include "motion/velocity_ramp.hpp"
 
 namespace drycut::motion {
@@ -217,8 +218,8 @@ class Planner : public interp::ElementSink {
 
   std::deque<std::unique_ptr<WindowElement>> elements_;
   std::vector<std::unique_ptr<WindowElement>> spare_elements_;  // popped elements, for reuse
-  std::deque<Node> nodes_;
-  std::deque<Segment> segments_;
+  RingBuffer<Node> nodes_;
+  RingBuffer<Segment> segments_;
   size_t motion_in_window_ = 0;
   // The last motion element with length in the window, for the next junction.
   const WindowElement* last_motion_ = nullptr;

@@ -46,10 +46,11 @@ size_t scan_number(std::string_view s, size_t i) {
   return i;
 }
 
+constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
 // Digits with at most 15 significant digits in all: the integer of all digits and the power of
 // ten are exact doubles, so one division gives the correctly rounded value from_chars would.
 bool fast_decimal(std::string_view digits, double& out) {
-  static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
   uint64_t mantissa = 0;
   int count = 0, decimals = -1;
   for (const char c : digits) {
@@ -101,11 +102,32 @@ inline bool is_blank(char c) {
   return c == ' ' || c == '&' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F;
 }
 
-// The number starting at i as a Number token; returns its end.
+// The number starting at i as a Number token; returns its end. A plain decimal (digits with at
+// most one point, no EX) is converted as it is scanned, to the value fast_decimal gives: the
+// coordinates of a CAM program are read once instead of three times.
 inline size_t lex_number(std::string_view s, size_t i, std::vector<Token>& out) {
-  const size_t end = scan_number(s, i);
+  uint64_t mantissa = 0;
+  int count = 0, decimals = -1;
+  size_t end = i;
+  for (; end < s.size(); ++end) {
+    const char c = s[end];
+    if (is_digit(c)) {
+      mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
+      ++count;
+      if (decimals >= 0) ++decimals;
+    } else if (c == '.' && decimals < 0) {
+      decimals = 0;
+    } else {
+      break;
+    }
+  }
+  const bool plain = end + 1 >= s.size() || s[end] != 'E' || s[end + 1] != 'X';
+  if (!plain) end = scan_number(s, i);
   Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
-  t.number = to_double(t.text, t.column);
+  if (plain && count > 0 && count <= 15)
+    t.number = static_cast<double>(mantissa) / kPow10[decimals > 0 ? decimals : 0];
+  else
+    t.number = to_double(t.text, t.column);
   out.push_back(t);
   return end;
 }

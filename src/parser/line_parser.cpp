@@ -34,6 +34,7 @@ bool split_letters_digits(std::string_view name, std::string_view& letters, int6
 }
 
 bool is_block_number_name(std::string_view name, int64_t& value) {
+  if (name.empty() || name[0] != 'N') return false;  // the usual answer, asked twice per line
   std::string_view letters;
   return split_letters_digits(name, letters, value) && letters == "N";
 }

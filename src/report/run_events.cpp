@@ -65,7 +65,11 @@ void RunEventRecorder::on_block(const motion::BlockTiming& timing) {
     if (m0_seen_ && !dwell_after_m0_) dwell_after_m0_ = clock_s_;
   }
   if (contour_over_) return;
-  const bool in_call = timing.source.file_name() != main_file_ && !timing.source.file_name().empty();
+  if (timing.source.file != last_file_ || !last_file_) {
+    last_file_ = timing.source.file;
+    last_in_call_ = timing.source.file_name() != main_file_ && !timing.source.file_name().empty();
+  }
+  const bool in_call = last_in_call_;
   if (in_call) {
     if (!contour_start_) contour_start_ = begin;
     contour_end_ = clock_s_;

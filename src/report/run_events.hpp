@@ -12,6 +12,7 @@
 // An event the run does not reach (no M0, no dwell, no call, or a stop by an alarm before it)
 // has no time, and neither has a span that names it.
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -51,6 +52,10 @@ class RunEventRecorder : public motion::PlanObserver {
 
  private:
   std::string main_file_;
+  // The file of the last block and whether it is a called program's: compared by name only when
+  // the file changes (held, so that its address is not taken by another file's name meanwhile).
+  std::shared_ptr<const std::string> last_file_;
+  bool last_in_call_ = false;
   double clock_s_ = 0;
   bool m0_seen_ = false;
   bool contour_over_ = false;
