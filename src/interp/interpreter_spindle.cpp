@@ -1,7 +1,7 @@
 // The programmable spindle speed limits G25 S / G26 S and the dwell in spindle revolutions
 // G4 S / G4 S<n>= (Fundamentals, "Programmable spindle speed limitation (G25, G26)" and
-// "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits"), and the spindle speeds
-// $P_S / $AA_S read back.
+// "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits"), the spindle speeds
+// $P_S / $AA_S read back, and the wait for the spindle run-up (MD35500; "Spindle run-up").
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -142,8 +142,8 @@ double Interpreter::programmed_spindle_speed(int spindle) const {
 }
 
 double Interpreter::actual_spindle_speed(int spindle) const {
-  // In a dry run the spindle turns at its programmed speed at once (MD35500 run-up not waited
-  // for); M5 and SPOS stop it. The sign follows the direction, as the control's actual value.
+  // $AA_S reads the set speed at once, not the speed on the run-up ramp (the path's wait for it
+  // is timed by wait_for_spindle_speed); M5 and SPOS stop it. The sign follows the direction.
   const bool master = spindle == 0 || spindle == master_spindle_;
   SpindleState state = state_.spindle;
   if (!master) {
@@ -190,7 +190,7 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   // Called for the first element with feed after a speed change (G0 does not wait: its block
   // runs while the spindle comes up, drycut's reading of MD35500). A stopped spindle holds
   // nothing back. The wait is a dwell before the block: the ramp time into the set range less
-  // the nominal time (a lower bound of the planned time) since the change.
+  // the nominal time (add_nominal_time's estimate of the planned time) since the change.
   run_up_.pending = false;
   if (recorder_.active() || run_up_.to_rpm == 0.0) return;
   const double tolerance = profile_.spindle_des_velo_tol * std::abs(run_up_.to_rpm);
