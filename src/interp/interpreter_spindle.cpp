@@ -207,8 +207,10 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
 }
 
 void Interpreter::note_tool_change_stops_spindle() {
-  // A tool change stops and orients the spindle for the changer (the machine's M6 cycle): the
-  // next programmed speed, even the same S M3 again, ramps from standstill after the change.
+  // A tool change with M6 (MD22550 = 1, a milling machine's magazine) stops and orients the tool
+  // spindle for the changer: the next programmed speed, even the same S M3 again, ramps from
+  // standstill after it. A turret's T (MD22550 = 0, a lathe) leaves the work spindle turning.
+  if (!tools_.change_on_m_code()) return;
   run_up_ = {nominal_time_s_, 0.0, 0.0, false};
   spindle_command_ = SpindleCommand{SpindleState::Stopped, 0.0, false, master_spindle_};
 }
