@@ -1,5 +1,7 @@
 #include "interp/spline_run.hpp"
 
+#include <cstddef>
+#include <type_traits>
 #include <utility>
 
 namespace drycut::interp {
@@ -12,7 +14,7 @@ void SplineRun::begin(MotionMode mode, const geometry::Vec3& start,
     case MotionMode::CSpline: builder_ = geometry::make_cubic_builder(begin_condition, cubic_window); break;
     default: builder_ = geometry::make_nurbs_builder(degree); break;
   }
-  waiting_.clear();
+  clear_waiting();
   first_waiting_ = 1;
   next_index_ = 0;
   has_last_tangent_ = false;
@@ -39,11 +41,11 @@ void SplineRun::drain(ElementSink& sink) {
   while (builder_->pop_span(span)) {
     // Blocks whose spans are all out (a NURBS block may own none) leave the queue.
     size_t index = span.block_index < first_waiting_ ? first_waiting_ : span.block_index;
-    while (first_waiting_ < index && waiting_.size() > 1) {
-      waiting_.pop_front();
+    while (first_waiting_ < index && waiting_count() > 1) {
+      pop_waiting();
       ++first_waiting_;
     }
-    PathElement element = waiting_.front();
+    PathElement element = waiting_[waiting_head_];
     element.kind = ElementKind::SplineSpan;
     element.curve = span.curve;
     last_tangent_ = span.curve->at(span.curve->length()).tangent;
@@ -54,7 +56,20 @@ void SplineRun::drain(ElementSink& sink) {
 
 void SplineRun::reset() {
   builder_.reset();
-  waiting_.clear();
+  clear_waiting();
+}
+
+// The waiting vector moves its elements when it grows or compacts (copies would cost more).
+static_assert(std::is_nothrow_move_constructible_v<PathElement>);
+
+void SplineRun::pop_waiting() {
+  ++waiting_head_;
+  // Compacted once the popped entries are many and at least half: amortised O(1), and the
+  // vector's capacity stays small (a spline run keeps one or two blocks waiting).
+  if (waiting_head_ >= 64 && 2 * waiting_head_ >= waiting_.size()) {
+    waiting_.erase(waiting_.begin(), waiting_.begin() + static_cast<std::ptrdiff_t>(waiting_head_));
+    waiting_head_ = 0;
+  }
 }
 
 }  // namespace drycut::interp

@@ -3,8 +3,8 @@
 // The geometry builder sees the points; this class remembers, for each block still waiting for its
 // spans, what the element needs besides geometry (source block, feed, dynamics, compensation). The
 // builders are local (Akima, windowed cubic, NURBS), so the waiting queue stays short.
-#include <deque>
 #include <memory>
+#include <vector>
 
 #include "interp/geometry/spline_builder.hpp"
 #include "interp/modal_state.hpp"
@@ -36,8 +36,20 @@ class SplineRun {
  private:
   MotionMode mode_ = MotionMode::ASpline;
   std::unique_ptr<geometry::SplineBuilder> builder_;
-  std::deque<PathElement> waiting_;  // element templates of blocks first_waiting_.. in order
-  size_t first_waiting_ = 1;         // block index of waiting_.front() (point 0 is the start)
+  // Element templates of blocks first_waiting_.. in order: waiting_[waiting_head_..]. A vector
+  // with a moving head, not a std::deque: a PathElement is larger than a deque block, so each
+  // spline block cost a deque node malloc and free. Popped entries stay until pop_waiting()
+  // compacts the vector (their memory only: nothing reads them).
+  std::vector<PathElement> waiting_;
+  size_t waiting_head_ = 0;
+  size_t first_waiting_ = 1;  // block index of waiting_[waiting_head_] (point 0 is the start)
+
+  size_t waiting_count() const { return waiting_.size() - waiting_head_; }
+  void pop_waiting();
+  void clear_waiting() {
+    waiting_.clear();
+    waiting_head_ = 0;
+  }
   size_t next_index_ = 0;
   geometry::Vec3 start_ = geometry::Vec3::Zero();
   bool has_last_tangent_ = false;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
+#include <typeinfo>
 
 #include "interp/geometry/arc_curve.hpp"
 
@@ -253,7 +255,11 @@ bool discretise_element(const geometry::Curve& curve, double length, double fine
     return st;
   };
   out.push_back(station(0.0));
-  const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve);
+  // ArcCurve is final, so comparing the dynamic type is the dynamic_cast's answer; a failing
+  // __dynamic_cast walked the class hierarchy (~180 instructions per spline span).
+  static_assert(std::is_final_v<geometry::ArcCurve>);
+  const auto* arc =
+      typeid(curve) == typeid(geometry::ArcCurve) ? static_cast<const geometry::ArcCurve*>(&curve) : nullptr;
   if (!rule.equal_segments && !arc && length > fine_step_mm) {
     DiscretisationRule sampled = rule;
     sampled.bound_tolerance = rule.sampled_bound_tolerance;

@@ -1,4 +1,5 @@
 // ASPLINE: Akima spline with chord-length parameter (see spline_builder.hpp for the rules).
+#include <array>
 #include <cmath>
 
 #include "interp/geometry/cubic_spline_tangents.hpp"
@@ -29,11 +30,27 @@ class AkimaBuilder final : public HermiteSplineBuilder {
     return (b.point - node(static_cast<size_t>(k)).point) / b.step;
   }
 
+  // The chord slopes m_{i-2}..m_{i+1} around interior node i. Consecutive nodes share three of
+  // them, so each slope is computed once (three divisions and two deque lookups per slope); a
+  // slope inside the run does not depend on `last`, and one beyond its end is only asked once
+  // finished, when `last` no longer changes: the same values as computing all four.
+  const std::array<Vec3, 4>& slopes_around(long k, size_t last) {
+    if (slopes_at_ == k - 1) {
+      slopes_[0] = slopes_[1];
+      slopes_[1] = slopes_[2];
+      slopes_[2] = slopes_[3];
+      slopes_[3] = slope(k + 1, last);
+    } else {
+      for (long j = 0; j < 4; ++j) slopes_[static_cast<size_t>(j)] = slope(k - 2 + j, last);
+    }
+    slopes_at_ = k;
+    return slopes_;
+  }
+
   // Classical Akima rule per axis at interior node i.
-  Vec3 akima_tangent(size_t i, size_t last) const {
-    const long k = static_cast<long>(i);
-    const Vec3 m_2 = slope(k - 2, last);  // i >= 1, so at most m_{-1} lies beyond the run
-    const Vec3 m_1 = slope(k - 1, last), m0 = slope(k, last), m1 = slope(k + 1, last);
+  Vec3 akima_tangent(size_t i, size_t last) {
+    const auto& m = slopes_around(static_cast<long>(i), last);  // i >= 1: at most m_{-1} lies beyond the run
+    const Vec3 &m_2 = m[0], &m_1 = m[1], &m0 = m[2], &m1 = m[3];
     Vec3 t;
     for (int a = 0; a < 3; ++a) {
       const double w_left = std::abs(m1[a] - m0[a]);   // weights the slope before the point
@@ -93,6 +110,8 @@ class AkimaBuilder final : public HermiteSplineBuilder {
   }
 
   SplineEnd begin_;
+  std::array<Vec3, 4> slopes_;
+  long slopes_at_ = -10;  // node whose slopes slopes_ holds (none yet)
   size_t next_interior_ = 1;
   bool start_done_ = false;
 };
