@@ -191,8 +191,9 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   // runs while the spindle comes up, drycut's reading of MD35500). A stopped spindle holds
   // nothing back. The wait is a dwell before the block: the ramp time into the set range less
   // the nominal time (add_nominal_time's estimate of the planned time) since the change.
+  if (recorder_.active()) return;  // a contour recorded without moving: the first real cut waits
   run_up_.pending = false;
-  if (recorder_.active() || run_up_.to_rpm == 0.0) return;
+  if (run_up_.to_rpm == 0.0) return;
   const double tolerance = profile_.spindle_des_velo_tol * std::abs(run_up_.to_rpm);
   const double ramp_s = std::max(0.0, std::abs(run_up_.to_rpm - run_up_.from_rpm) - tolerance) /
                         (profile_.spindle_speedctrl_accel_rev_s2 * 60.0);
