@@ -501,9 +501,7 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   const Eigen::Vector3d tip = position_ - length_applied_;
   const double x0 = frame.to_inner(tip)[state_.cutting_speed_axis];
   const double x1 = chord ? frame.to_inner(tip + *chord)[state_.cutting_speed_axis] : x0;
-  double max_rpm = profile_.max_spindle_speed_rpm;
-  if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
-  if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
+  const double max_rpm = g96_speed_ceiling();
   for (const double x : {x0, x1}) {  // the G25/G26 warnings where the ends of the block need them
     const double rpm = std::abs(x) > 1e-9 ? speed_mm_min / (std::numbers::pi * 2.0 * std::abs(x)) : max_rpm;
     limit_to_g25_g26(ctx, state_.spindle_speed_limit > 0 ? std::min(rpm, state_.spindle_speed_limit) : rpm, true);

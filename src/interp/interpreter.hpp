@@ -254,7 +254,9 @@ class Interpreter {
   // G25 S / G26 S: the master spindle's lower / upper speed limit (interpreter_spindle.cpp).
   void set_speed_limit(const BlockContext& ctx, const parser::AddressWord& a);
   // A spindle speed limited by G25/G26 (warning 990013 where a limit acts).
-  double limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed);
+  double limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed);  // warns
+  double within_g25_g26(double rpm) const;  // the same limits, silently
+  double g96_speed_ceiling() const;         // MD35100, LIMS, G26: the highest G96 speed
   PathElement dwell_element(BlockContext& ctx);             // G4 F / S / S<n>=
   void warn_working_area(const BlockContext& ctx);          // G25/G26 with axis words
   // G4 S<rev> / G4 S<n>=<rev>: the dwell in seconds.

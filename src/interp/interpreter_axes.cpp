@@ -57,11 +57,11 @@ bool Interpreter::note_unknown_axis_word(BlockContext& ctx, const AddressWord& a
   // Words that name an axis drycut does not have: never dropped without a word (a tool-change
   // retract `G0 X1=30` that moves nothing puts every later move in the wrong place).
   const std::string_view n = a.name;
-  if (ctx.home_move != 0 && machine_axis_index(n) >= 0) return true;  // G74/G75 move it
   if (machine_axis_index(n) >= 0) {
-    warn_once(ctx, a.name + "= (the machine axis name of " + std::string(n.substr(0, 1)) +
-                       ") outside G74/G75: the axis does not move",
-              a.column);
+    if (ctx.home_move == 0)  // G74/G75 move it (move_to_fixed_point)
+      warn_once(ctx, a.name + "= (the machine axis name of " + std::string(n.substr(0, 1)) +
+                         ") outside G74/G75: the axis does not move",
+                a.column);
     return true;
   }
   // Q and E are assignable addresses (axis names on some machines); X2, Z3, U1 ... extended
@@ -236,7 +236,7 @@ void Interpreter::move_to_fixed_point(BlockContext& ctx) {
   }
   Vector3d target = position_;
   for (const AddressWord& a : ctx.block.addresses) {
-    const int i = axis_index(a.name) >= 0 ? axis_index(a.name) : machine_axis_index(a.name);  // X or X1
+    const int i = std::max(axis_index(a.name), machine_axis_index(a.name));  // X or X1 (the other is -1)
     if (i < 0) {
       if (a.name != "FP" && extra_axes_.index(a.name) >= 0)
         warn_once(ctx, "G" + std::to_string(ctx.home_move) + " of axis " + a.name + " (the axis does not move)", a.column);

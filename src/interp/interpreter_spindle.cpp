@@ -31,12 +31,25 @@ void Interpreter::set_speed_limit(const BlockContext& ctx, const AddressWord& a)
   (ctx.speed_limit == 25 ? spindle_min_rpm_ : spindle_max_rpm_) = a.value;
 }
 
-double Interpreter::limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed) {
+double Interpreter::within_g25_g26(double rpm) const {
   // A standing spindle (S0) is not raised to the lower limit.
-  const bool below = spindle_min_rpm_ > 0 && rpm > 0 && rpm < spindle_min_rpm_;
-  const bool above = spindle_max_rpm_ > 0 && rpm > spindle_max_rpm_;
-  if (!below && !above) return rpm;
-  const double limited = above ? spindle_max_rpm_ : spindle_min_rpm_;
+  if (spindle_max_rpm_ > 0 && rpm > spindle_max_rpm_) return spindle_max_rpm_;
+  if (spindle_min_rpm_ > 0 && rpm > 0 && rpm < spindle_min_rpm_) return spindle_min_rpm_;
+  return rpm;
+}
+
+double Interpreter::g96_speed_ceiling() const {
+  // Under G96 the speed may rise up to MD35100, LIMS and the G26 limit, whichever is lowest.
+  double max_rpm = profile_.max_spindle_speed_rpm;
+  if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
+  if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
+  return max_rpm;
+}
+
+double Interpreter::limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed) {
+  const double limited = within_g25_g26(rpm);
+  if (limited == rpm) return rpm;
+  const bool above = limited < rpm;
   // Under G96 the speed changes with every block: one warning per limit, not per speed.
   const std::string what = (constant_cutting_speed ? std::string("G96 spindle speed") : "S" + rpm_text(rpm)) +
                            (above ? " above the G26 limit" : " below the G25 limit") + ": limited to " +
@@ -155,18 +168,13 @@ double Interpreter::actual_spindle_speed(int spindle) const {
   double rpm = programmed_spindle_speed(spindle);
   if (master && !state_.constant_cutting_speed) {
     // The set speed within G26/G25 and MD35100, as spindle_speed() limits it.
-    if (spindle_max_rpm_ > 0) rpm = std::min(rpm, spindle_max_rpm_);
-    if (spindle_min_rpm_ > 0 && rpm > 0) rpm = std::max(rpm, spindle_min_rpm_);
-    rpm = std::min(rpm, profile_.max_spindle_speed_rpm);
+    rpm = std::min(within_g25_g26(rpm), profile_.max_spindle_speed_rpm);
   } else if (master) {
     // G96: S is the cutting speed; the spindle turns at what it gives at the tool's diameter
-    // now (LIMS, G26 and MD35100 above, G25 below), as spindle_speed() plans it.
+    // now, as spindle_speed() plans it.
     const Eigen::Vector3d tip = state_.frames.total(false).to_inner(position_ - length_applied_);
-    double max_rpm = profile_.max_spindle_speed_rpm;
-    if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
-    if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
     const double x = tip[state_.cutting_speed_axis];
-    rpm = constant_cutting_speed_rpm(cutting_speed_mm_min(rpm), x, x, spindle_min_rpm_, max_rpm);
+    rpm = constant_cutting_speed_rpm(cutting_speed_mm_min(rpm), x, x, spindle_min_rpm_, g96_speed_ceiling());
   }
   return state == SpindleState::CounterClockwise ? -rpm : rpm;
 }

@@ -207,11 +207,7 @@ Value ProgramLoader::Scope::isvar_value(const ExprNode& call, std::span<const Va
   if (c == SystemVariableClass::MachineData || c == SystemVariableClass::SettingData) {
     // Machine and setting data the profile gives are known; others may exist on the machine
     // the program was written for (options, software versions): TRUE, with a warning.
-    const auto hit = l.options_.machine_data.lower_bound(name);
-    const bool given = (hit != l.options_.machine_data.end() && hit->first.rfind(name, 0) == 0 &&
-                        (hit->first.size() == name.size() || hit->first[name.size()] == '[')) ||
-                       l.options_.machine_data_texts.count(name) > 0;
-    if (!given) l.warn(990007, "ISVAR(\"" + name + "\"): " + std::string(system_variable_class_name(c)) +
+    if (!l.system_variables_.profile_gives(name)) l.warn(990007, "ISVAR(\"" + name + "\"): " + std::string(system_variable_class_name(c)) +
                                    " not in the machine profile: TRUE assumed", call.column);
   }
   return Value(1.0);

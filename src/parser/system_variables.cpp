@@ -162,4 +162,14 @@ bool SystemVariables::is_known(std::string_view name) const {
   return classify_system_variable(name) != SystemVariableClass::Unknown;
 }
 
+bool SystemVariables::profile_gives(std::string_view name) const {
+  if (values_.find(name) != values_.end() || text_values_.find(name) != text_values_.end()) return true;
+  // Indexed data: the first key from "NAME[" on (keys like "NAMEX" sort before it).
+  const std::string indexed = std::string(name) + '[';
+  const auto hit = values_.lower_bound(indexed);
+  const auto text_hit = text_values_.lower_bound(indexed);
+  return (hit != values_.end() && hit->first.starts_with(indexed)) ||
+         (text_hit != text_values_.end() && text_hit->first.starts_with(indexed));
+}
+
 }  // namespace drycut::parser

@@ -71,6 +71,8 @@ class SystemVariables {
   ReadResult read(std::string_view upper_name, std::span<const Value> indices) const;
   void write(std::string_view upper_name, std::span<const Value> indices, const Value& v);
   bool is_known(std::string_view upper_name) const;
+  // The profile gives this datum, as a scalar or with an index ("$MC_X" or "$MC_X[...]").
+  bool profile_gives(std::string_view upper_name) const;
   // The written values as bytes (the loop guard's state).
   void append_state(std::string& out) const;
   // How many values were read from the interpreter so far.
