@@ -46,25 +46,44 @@ size_t scan_number(std::string_view s, size_t i) {
   return i;
 }
 
-constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-
-// Digits with at most 15 significant digits in all: the integer of all digits and the power of
+// Digits with at most one point, read from s[i] on: their integer, how many digits, how many
+// after the point (-1: no point). With at most 15 significant digits the integer and the power of
 // ten are exact doubles, so one division gives the correctly rounded value from_chars would.
-bool fast_decimal(std::string_view digits, double& out) {
+struct PlainDecimal {
   uint64_t mantissa = 0;
-  int count = 0, decimals = -1;
-  for (const char c : digits) {
-    if (c == '.') {
-      if (decimals >= 0) return false;
-      decimals = 0;
-      continue;
-    }
-    if (c < '0' || c > '9' || ++count > 15) return false;
-    mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
-    if (decimals >= 0) ++decimals;
+  int count = 0;
+  int decimals = -1;
+  size_t end = 0;  // where the digits stop
+  bool exact() const { return count > 0 && count <= 15; }
+  double value() const {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    return static_cast<double>(mantissa) / kPow10[decimals > 0 ? decimals : 0];
   }
-  if (count == 0) return false;
-  out = static_cast<double>(mantissa) / kPow10[decimals > 0 ? decimals : 0];
+};
+
+PlainDecimal scan_plain_decimal(std::string_view s, size_t i) {
+  PlainDecimal d;
+  for (; i < s.size(); ++i) {
+    const char c = s[i];
+    if (is_digit(c)) {
+      d.mantissa = d.mantissa * 10 + static_cast<uint64_t>(c - '0');  // wraps past 19 digits: not exact()
+      ++d.count;
+      if (d.decimals >= 0) ++d.decimals;
+    } else if (c == '.' && d.decimals < 0) {
+      d.decimals = 0;
+    } else {
+      break;
+    }
+  }
+  d.end = i;
+  return d;
+}
+
+// The whole text a plain decimal of at most 15 digits: its value, else false.
+bool fast_decimal(std::string_view digits, double& out) {
+  const PlainDecimal d = scan_plain_decimal(digits, 0);
+  if (d.end != digits.size() || !d.exact()) return false;
+  out = d.value();
   return true;
 }
 
@@ -106,28 +125,11 @@ inline bool is_blank(char c) {
 // most one point, no EX) is converted as it is scanned, to the value fast_decimal gives: the
 // coordinates of a CAM program are read once instead of three times.
 inline size_t lex_number(std::string_view s, size_t i, std::vector<Token>& out) {
-  uint64_t mantissa = 0;
-  int count = 0, decimals = -1;
-  size_t end = i;
-  for (; end < s.size(); ++end) {
-    const char c = s[end];
-    if (is_digit(c)) {
-      mantissa = mantissa * 10 + static_cast<uint64_t>(c - '0');
-      ++count;
-      if (decimals >= 0) ++decimals;
-    } else if (c == '.' && decimals < 0) {
-      decimals = 0;
-    } else {
-      break;
-    }
-  }
-  const bool plain = end + 1 >= s.size() || s[end] != 'E' || s[end + 1] != 'X';
-  if (!plain) end = scan_number(s, i);
+  const PlainDecimal d = scan_plain_decimal(s, i);
+  const bool plain = d.end + 1 >= s.size() || s[d.end] != 'E' || s[d.end + 1] != 'X';
+  const size_t end = plain ? d.end : scan_number(s, i);
   Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
-  if (plain && count > 0 && count <= 15)
-    t.number = static_cast<double>(mantissa) / kPow10[decimals > 0 ? decimals : 0];
-  else
-    t.number = to_double(t.text, t.column);
+  t.number = plain && d.exact() ? d.value() : to_double(t.text, t.column);
   out.push_back(t);
   return end;
 }
