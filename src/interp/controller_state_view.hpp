@@ -23,6 +23,7 @@ class InterpreterStateView : public parser::ControllerStateView {
                                                     std::span<const parser::Value> indices) const override;
   double elapsed_s() const override { return interpreter_.nominal_time_s(); }
   double poll_clock(uint64_t line) const override { return interpreter_.poll_clock(line); }
+  double cutting_time_s() const override { return interpreter_.cutting_time_s(); }
 
  private:
   std::optional<double> g_group_index(int group) const;

@@ -79,6 +79,8 @@ class Interpreter {
   double actual_spindle_speed(int spindle) const;
   // A lower bound of the time so far (path length / feed, dwells, clock polls).
   double nominal_time_s() const { return nominal_time_s_ + clock_wait_s_; }
+  // The part of it spent moving at feed with a tool active (tool action time, $AC_CUTTING_TIME).
+  double cutting_time_s() const { return cutting_time_s_; }
   // A read of the run clock ($AC_OPERATING_TIME, $AC_TIMER, $A_SECOND ...) on program line `line`
   // (a running count): the time it sees. The line waits for the main run (a main-run variable
   // stops the block preparation); when nothing that takes time ran since the last line that read
@@ -277,7 +279,7 @@ class Interpreter {
   struct RecordingStart {
     Eigen::Vector3d position, length_applied, last_tangent;
     bool has_last_tangent = false;
-    double nominal_time_s = 0.0;
+    double nominal_time_s = 0.0, cutting_time_s = 0.0;
     DynamicsMode last_dynamics;
     std::optional<double> held_angle_deg;
     CornerWords held_corner;
@@ -310,6 +312,7 @@ class Interpreter {
   // RND/CHF/CHR (and FRC) written in that block: the corner where the two lines meet.
   CornerWords held_corner_;
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
+  double cutting_time_s_ = 0.0;  // the part of it at feed with a tool active
   double clock_wait_s_ = 0.0;    // clock polls not yet emitted as a dwell (poll_clock)
   double waited_s_ = 0.0;               // clock waits emitted so far (part of nominal_time_s_)
   double worked_at_poll_ = -1.0;         // nominal time without them at the last line that read the clock

@@ -17,7 +17,7 @@ void Interpreter::record_contour(const BlockContext& ctx, bool begin, uint32_t c
   if (spline_.active()) end_spline_run(nullptr);
   if (begin) {
     recording_start_ = RecordingStart{position_,     length_applied_, last_tangent_,
-                                      has_last_tangent_, nominal_time_s_, last_dynamics_,
+                                      has_last_tangent_, nominal_time_s_, cutting_time_s_, last_dynamics_,
                                       held_angle_deg_, held_corner_,    thread_chain_,
                                       block_between_compressible_,      compensation_selection_pending_,
                                       tools_,        extra_axes_};
@@ -40,6 +40,7 @@ void Interpreter::stop_recording() {
   last_tangent_ = r.last_tangent;
   has_last_tangent_ = r.has_last_tangent;
   nominal_time_s_ = r.nominal_time_s;
+  cutting_time_s_ = r.cutting_time_s;
   last_dynamics_ = r.last_dynamics;  // the next real motion reports its dynamics downstream again
   held_angle_deg_ = r.held_angle_deg;
   held_corner_ = r.held_corner;

@@ -27,7 +27,7 @@ std::optional<double> clock_field(std::string_view n, double elapsed_s) {
 
 std::optional<double> run_clock_reading(std::string_view n, double elapsed_s) {
   if (n.size() < 4 || n[1] != 'A') return std::nullopt;  // $A_..., $AC_..., $AN_...
-  if (n == "$AC_OPERATING_TIME" || n == "$AC_CYCLE_TIME" || n == "$AC_CUTTING_TIME") return elapsed_s;
+  if (n == "$AC_OPERATING_TIME" || n == "$AC_CYCLE_TIME") return elapsed_s;
   if (n == "$AN_SETUP_TIME" || n == "$AN_POWERON_TIME") return elapsed_s / 60.0;
   return clock_field(n, elapsed_s);
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The run clock a program reads: run-time counters ($AC_OPERATING_TIME, $AC_CYCLE_TIME,
-// $AC_CUTTING_TIME in s; $AN_SETUP_TIME, $AN_POWERON_TIME in min) and the control's clock
+// $AN_SETUP_TIME, $AN_POWERON_TIME in min) and the control's clock
 // ($A_YEAR ... $A_MSECOND) (Job Planning, list of system variables). The dry-run control has run
 // nothing but the program, so the counters start at 0 with it; the clock is deterministic, so a
 // run does not depend on when it is made: it reads 08:00:00 on Monday 1 January 2024 at the

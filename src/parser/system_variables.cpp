@@ -71,6 +71,12 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   if (auto it = texts_.find(key); it != texts_.end()) return {Value::of_text(it->second), false};
   if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
   if (sync_action_variable) return {Value(0.0), false};  // 0 until written
+  if (name == "$AC_CUTTING_TIME") {
+    // Tool action time: only motion at feed with a tool active counts, so polling it passes no
+    // time (docs/controller-state.md "Clock, run-time counters ...").
+    ++view_reads_;
+    return {Value(view_ ? view_->cutting_time_s() : 0.0), false};
+  }
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? view_->poll_clock(line_) : 0.0)), false};

@@ -51,6 +51,8 @@ class ControllerStateView {
   // program line `line` (a running count of lines executed): such a read waits for the main
   // run, so a program that polls the clock lets time pass (Interpreter::poll_clock).
   virtual double poll_clock(uint64_t /*line*/) const { return elapsed_s(); }
+  // Seconds of motion at feed with a tool active so far ($AC_CUTTING_TIME, tool action time).
+  virtual double cutting_time_s() const { return 0.0; }
 };
 
 using MachineDataMap = std::map<std::string, double, std::less<>>;
