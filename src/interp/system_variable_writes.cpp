@@ -2,8 +2,8 @@
 // (length), $TC_DP6 (radius) and $TC_DPNT (number of teeth) of tool t, edge d; settable frames $P_UIFR[n] (whole, from a
 // frame function, or by component $P_UIFR[n, X, TR]; effective when next selected), the active
 // settable frame $P_IFRAME (whole or by component, at once) and the programmable frame
-// $P_PFRAME (at once) — frame_components.hpp. Other frame writes ($P_BFRAME,
-// component writes of $P_PFRAME, chained frame expressions) warn. Other writes were kept by the
+// $P_PFRAME (whole or by component, at once) — frame_components.hpp. Other frame writes
+// ($P_BFRAME, chained frame expressions) warn. Other writes were kept by the
 // loader (later reads see them) and change nothing drycut times.
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
@@ -64,7 +64,13 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
                                : active ? active_settable_components_
                                         : FrameComponents{};
   if (w.indices.size() == first + 2) {  // [.., axis, component] = value
-    if (!(settable || active) || !w.value.is_number()) return false;  // $P_PFRAME components: not kept as components
+    if (!w.value.is_number()) return false;
+    if (!settable && !active) {
+      // The programmable frame is kept as a matrix: its components are taken from it.
+      const std::optional<FrameComponents> now = components_of(state_.frames.programmable());
+      if (!now) return false;
+      components = *now;
+    }
     const int axis = detail::axis_index(w.indices[first].text);
     const std::string& component = w.indices[first + 1].text;
     const bool length = component == "TR" || component == "FI";
