@@ -12,6 +12,7 @@ const char* compressor_label(Compressor mode) {
     case Compressor::Compon: return "COMPON";
     case Compressor::Compcurv: return "COMPCURV";
     case Compressor::Compcad: return "COMPCAD";
+    case Compressor::Compsurf: return "COMPSURF";
     case Compressor::Off: break;
   }
   return "COMPOF";
@@ -37,8 +38,9 @@ geometry::CompressorFitOptions BlockCompressor::fit_options(const machine::Machi
   const machine::CompressorData& c = profile.compressor;
   geometry::CompressorFitOptions o;
   o.continuity = mode == Compressor::Compon ? geometry::FitContinuity::C1 : geometry::FitContinuity::C2;
+  const bool compcad = mode == Compressor::Compcad || mode == Compressor::Compsurf;  // COMPSURF: as COMPCAD
   // COMPON/COMPCURV join up to 10 blocks per polynomial; COMPCAD any number (FB1 B1).
-  o.max_segments_per_span = mode == Compressor::Compcad ? 0 : static_cast<size_t>(c.max_blocks_per_span);
+  o.max_segments_per_span = compcad ? 0 : static_cast<size_t>(c.max_blocks_per_span);
   // MD20482 units digit: 0/2 the axis tolerances MD33100, 1/3 the contour tolerance SD42475.
   const int units = c.mode % 10;
   o.contour_tolerance = units == 1 || units == 3;
@@ -46,7 +48,7 @@ geometry::CompressorFitOptions BlockCompressor::fit_options(const machine::Machi
   for (int i = 0; i < 3; ++i) o.axis_tol_mm[i] = profile.axes[static_cast<size_t>(i)].compress_pos_tol_mm;
   // SD42470 is COMPCAD's corner angle; COMPON/COMPCURV detect no corners (a corner they cannot
   // round within the tolerance stays a pair of straight blocks, compressor_fit.hpp step 6).
-  o.corner_angle_deg = mode == Compressor::Compcad ? c.crit_spline_angle_deg : 180.0;
+  o.corner_angle_deg = compcad ? c.crit_spline_angle_deg : 180.0;
   return o;
 }
 

@@ -29,8 +29,11 @@ bool is_simple_block(const parser::Block& block, const ExtraAxes& extra_axes) {
 void Interpreter::mark_for_compressor(const BlockContext& ctx, PathElement& element) {
   element.compressor = state_.compressor;
   if (state_.compressor == Compressor::Off) return;
+  if (state_.compressor == Compressor::Compsurf)
+    warn_once(ctx, "COMPSURF (Top Surface): planned as COMPCAD, its own surface smoothing is not published", 0);
+  const bool compcad = state_.compressor == Compressor::Compcad || state_.compressor == Compressor::Compsurf;
   const int hundreds = profile_.compressor.mode / 100 % 10;
-  if (element.kind == ElementKind::Arc && state_.compressor == Compressor::Compcad && (hundreds == 1 || hundreds == 3))
+  if (element.kind == ElementKind::Arc && compcad && (hundreds == 1 || hundreds == 3))
     warn_once(ctx, "COMPCAD compression of circles (MD20482 hundreds digit 1/3): circle blocks stay circles", 0);
   if (element.rapid && (hundreds == 2 || hundreds == 3))
     warn_once(ctx, "compression of G0 blocks (MD20482 hundreds digit 2/3): G0 blocks stay lines", 0);

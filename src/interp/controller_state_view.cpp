@@ -85,7 +85,7 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
     case 12: return s.exact_stop_window - 600;  // G601 G602 G603
     case 18: return s.intersection_corners ? 2 : 1;
     case 21: return s.accel == AccelProfile::Soft ? 2 : 1;  // BRISK SOFT (DRIVE)
-    case 30: return static_cast<double>(s.compressor) + 1;   // COMPOF COMPON COMPCURV COMPCAD
+    case 30: return static_cast<double>(s.compressor) + 1;   // COMPOF COMPON COMPCURV COMPCAD COMPSURF
     case 59: return static_cast<double>(s.dynamic_group) + 1;  // DYNNORM DYNPOS DYNROUGH DYNSEMIFIN DYNFINISH DYNPREC
     default: return std::nullopt;
   }

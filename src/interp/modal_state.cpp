@@ -18,7 +18,7 @@ void set_feed_mode(ModalState& s, FeedMode mode) {
 
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
-constexpr std::array<std::pair<std::string_view, Setter>, 75> kCodes{{
+constexpr std::array<std::pair<std::string_view, Setter>, 76> kCodes{{
     {"G0", [](ModalState& s) { s.motion = MotionMode::Rapid; }},
     {"G1", [](ModalState& s) { s.motion = MotionMode::Linear; }},
     {"G2", [](ModalState& s) { s.motion = MotionMode::ArcCw; }},
@@ -95,6 +95,7 @@ constexpr std::array<std::pair<std::string_view, Setter>, 75> kCodes{{
     {"COMPON", [](ModalState& s) { s.compressor = Compressor::Compon; }},
     {"COMPCURV", [](ModalState& s) { s.compressor = Compressor::Compcurv; }},
     {"COMPCAD", [](ModalState& s) { s.compressor = Compressor::Compcad; }},
+    {"COMPSURF", [](ModalState& s) { s.compressor = Compressor::Compsurf; }},
     {"G601", [](ModalState& s) { s.exact_stop_window = 601; }},
     {"G602", [](ModalState& s) { s.exact_stop_window = 602; }},
     {"G603", [](ModalState& s) { s.exact_stop_window = 603; }},

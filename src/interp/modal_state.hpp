@@ -74,7 +74,7 @@ struct ModalState {
   ContourFeed contour_feed = ContourFeed::Contour;  // CFC / CFTCP / CFIN
   double disc = 0.0;                  // DISC=
   double offn_mm = 0.0;            // OFFN=: contour offset added to the tool radius under G41/G42
-  Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD
+  Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD / COMPSURF
   DiameterState diameter;             // DIAMON/DIAMOF/DIAM90/DIAMCYCOF, DIAMONA[ax] ... (MD20100)
   int cutting_speed_axis = 0;         // SCC[ax]: the axis whose position is G96's radius (X..Z)
   double rndm_mm = 0.0;               // RNDM=: modal rounding radius (0: off; contour_corners.hpp)

@@ -49,7 +49,9 @@ struct SmoothingRequest {
 enum class AccelProfile { Brisk, Soft };
 
 // The NC block compressor of G group 30 (docs/compressor.md): COMPOF, COMPON, COMPCURV, COMPCAD.
-enum class Compressor { Off, Compon, Compcurv, Compcad };
+// G group 30. COMPSURF (the Top Surface compressor, an option whose smoothing Siemens does not
+// publish) is planned as COMPCAD, with a warning (docs/compressor.md).
+enum class Compressor { Off, Compon, Compcurv, Compcad, Compsurf };
 
 enum class StopKind { None, ProgramStop /*M0*/, OptionalStop /*M1*/, ProgramEnd /*M2/M30*/, Preprocessing /*STOPRE*/ };
 

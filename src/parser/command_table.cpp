@@ -27,7 +27,7 @@ constexpr std::array kCommands{
     CommandEntry{"MSG", M},     CommandEntry{"RET", M},
     CommandEntry{"POLY", M},    CommandEntry{"POLYPATH", N},  // which axis groups POLY bends: not modelled
     CommandEntry{"COMPON", M},  CommandEntry{"COMPCURV", M}, CommandEntry{"COMPCAD", M},
-    CommandEntry{"COMPOF", M},
+    CommandEntry{"COMPOF", M},  CommandEntry{"COMPSURF", M},  // planned as COMPCAD, warned
     // drycut's own, for its contour cycles (interp/contour_recording.hpp; the control's cycles
     // use CONTPRON/EXECUTE): record the contour of the blocks between, run a contour by name.
     CommandEntry{"DRYCUT_CONTOUR_BEGIN", M}, CommandEntry{"DRYCUT_CONTOUR_END", M},
@@ -86,7 +86,7 @@ constexpr std::array kCommands{
     CommandEntry{"NUT", N},      CommandEntry{"XH", N},       CommandEntry{"YH", N},
     CommandEntry{"ZH", N},       CommandEntry{"THETA", N},    CommandEntry{"ISD", N}, CommandEntry{"MEASA", N},
     CommandEntry{"MEAWA", N},   CommandEntry{"OVRA", N},    CommandEntry{"OVRRAP", N},
-    CommandEntry{"COMPSURF", N}, CommandEntry{"WAITMC", N}, CommandEntry{"WAITE", N},
+    CommandEntry{"WAITMC", N}, CommandEntry{"WAITE", N},
     CommandEntry{"ORIVIRT1", N}, CommandEntry{"ORIVIRT2", N}, CommandEntry{"ORIAXPOS", N},
     CommandEntry{"ORIPATH", N}, CommandEntry{"ORIPATHS", N}, CommandEntry{"STOPREOF", N},
     CommandEntry{"FA", M},      CommandEntry{"DYNPREC", M},
@@ -330,7 +330,7 @@ struct NamedGGroup {
 };
 constexpr std::array kNamedGGroups{
     NamedGGroup{21, {"BRISK", "SOFT", "DRIVE"}},
-    NamedGGroup{30, {"COMPOF", "COMPON", "COMPCURV", "COMPCAD"}},
+    NamedGGroup{30, {"COMPOF", "COMPON", "COMPCURV", "COMPCAD", "COMPSURF"}},
     NamedGGroup{59, {"DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN", "DYNFINISH", "DYNPREC"}},
 };
 
