@@ -7,7 +7,7 @@
 #include "app/commands.hpp"
 #include "app/curve_options.hpp"
 #include "app/exit_code.hpp"
-#include "app/standard_cycles.hpp"
+#include "app/loader_setup.hpp"
 #include "app/program_pipeline.hpp"
 #include "workload/deviation_program_run.hpp"
 #include "workload/deviation_report.hpp"
@@ -27,6 +27,16 @@ struct DeviationOptions {
   bool programmed_points = false;
 };
 
+// The loader reads the program as `run` does: search path and standard cycles, definition
+// files (CYCLE_MACROS.DEF's _FINISH ...), step limit, the machine.
+workload::SampleOptions sample_options_for(const DeviationOptions& o, const machine::MachineProfile& profile) {
+  workload::SampleOptions s;
+  s.loader = make_loader_options(o.program.search_path, o.program.max_steps, o.program.definition_dirs,
+                                 o.program.missing_programs_warn, !o.program.no_standard_cycles, profile);
+  s.step_mm = o.step_mm;
+  return s;
+}
+
 void write_json(const std::string& file, const nlohmann::json& j) {
   std::ofstream out(file);
   if (!out) throw UsageError("cannot write " + file);
@@ -41,11 +51,7 @@ int run_programmed_points(const DeviationOptions& o) {
       !o.control_points_csv.empty())
     throw UsageError("--programmed-points measures the path against the program's own points: no curve or control points");
   const machine::MachineProfile profile = load_machine(o.program);
-  workload::SampleOptions sample_options;
-  sample_options.search_path = search_path_with_cycles(o.program.search_path, !o.program.no_standard_cycles);
-  sample_options.step_mm = o.step_mm;
-  sample_options.max_steps = o.program.max_steps;
-  sample_options.tool_centre = true;
+  const workload::SampleOptions sample_options = sample_options_for(o, profile);
   const workload::SampledProgram sampled = workload::sample_program(o.program.program, profile, sample_options);
   const workload::ProgrammedPointDeviation d =
       workload::programmed_point_deviation(sampled.programmed_points, sampled.tool_centre);
@@ -89,10 +95,7 @@ int run_deviation(const DeviationOptions& o) {
   if (!o.control_points_csv.empty()) control_points = workload::read_control_points(o.control_points_csv);
   else if (o.curve.points_csv.empty()) control_points = workload::thesis_control_points(curve);
 
-  workload::SampleOptions sample_options;
-  sample_options.search_path = search_path_with_cycles(o.program.search_path, !o.program.no_standard_cycles);
-  sample_options.step_mm = o.step_mm;
-  sample_options.max_steps = o.program.max_steps;
+  const workload::SampleOptions sample_options = sample_options_for(o, profile);
   const workload::SampledProgram sampled = workload::sample_program(o.program.program, profile, sample_options);
   const workload::ContourSplit split = workload::split_contour(sampled, reference, o.capture_mm);
   const workload::DeviationReport report = workload::evaluate_deviation(split, reference, control_points, o.held_line_range_mm);

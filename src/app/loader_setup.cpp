@@ -15,6 +15,7 @@ parser::LoaderOptions make_loader_options(const std::vector<std::string>& search
   // first, so the user's definition files can redefine every name.
   if (standard_cycles) {
     if (const auto folder = standard_cycles_folder()) o.definition_dirs.push_back(*folder);
+    o.standard_definition_dirs = o.definition_dirs.size();
   }
   for (const auto& dir : definition_dirs) o.definition_dirs.emplace_back(dir);
   o.max_steps = max_steps;

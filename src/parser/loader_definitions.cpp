@@ -18,6 +18,20 @@ bool is_name_char(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '$';
 }
 
+// DEFINE name AS text, after an optional block number (macros cannot nest: Job Planning,
+// "Macro technique").
+bool is_define_line(std::string_view line) {
+  size_t i = line.find_first_not_of(" \t");
+  if (i != std::string_view::npos && (line[i] == 'N' || line[i] == 'n')) {
+    const size_t digits = line.find_first_not_of("0123456789", i + 1);
+    if (digits != i + 1) i = line.find_first_not_of(" \t", digits);
+  }
+  if (i == std::string_view::npos || line.size() - i < 7) return false;
+  for (size_t k = 0; k < 6; ++k)
+    if ((line[i + k] & ~0x20) != "DEFINE"[k]) return false;
+  return !is_name_char(line[i + 6]);
+}
+
 }  // namespace
 
 Variable ProgramLoader::make_variable(const DefEntry& d) {
@@ -61,7 +75,7 @@ void ProgramLoader::initialise(Variable& v, const DefEntry& d) {
   }
 }
 
-void ProgramLoader::execute_def() {
+void ProgramLoader::execute_def(bool from_definition_file) {
   Frame& f = *frames_.back();
   if (f.executed_block)
     throw LineError(14500, parsed_.statement_column, "DEF after the first executable block");
@@ -69,11 +83,15 @@ void ProgramLoader::execute_def() {
   VariableTable& table = global ? globals_ : f.locals;
   for (const DefEntry& d : parsed_.defs) {
     Variable* existing = table.find(d.name);
-    if (existing && existing->def_line != position_.line)
+    if (existing && from_definition_file && existing->standard_definition) {
+      *existing = make_variable(d);  // in place: the table's addresses stay valid
+      existing->def_line = position_.line;
+    } else if (existing && (from_definition_file || existing->def_line != position_.line))
       throw LineError(12170, d.column, "name " + std::string(d.name) + " defined twice");
     if (!existing) {
       existing = &table.add(make_variable(d));
       existing->def_line = position_.line;
+      existing->standard_definition = reading_standard_definitions_;
     }
     initialise(*existing, d);
   }
@@ -120,8 +138,14 @@ void ProgramLoader::execute_proc() {
 void ProgramLoader::read_definition_files(const std::filesystem::path& main_folder) {
   std::vector<std::filesystem::path> dirs = options_.definition_dirs;
   dirs.push_back(main_folder);
-  for (const auto& dir : dirs) {
+  std::vector<std::filesystem::path> read;  // a folder named twice (--definitions . beside the program) is read once
+  for (size_t k = 0; k < dirs.size(); ++k) {
+    const std::filesystem::path& dir = dirs[k];
+    reading_standard_definitions_ = k < options_.standard_definition_dirs;
     std::error_code ec;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(dir, ec);
+    if (std::find(read.begin(), read.end(), canonical) != read.end()) continue;
+    read.push_back(canonical);
     std::vector<std::filesystem::path> files;
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
       std::string ext = entry.path().extension().string();
@@ -131,6 +155,7 @@ void ProgramLoader::read_definition_files(const std::filesystem::path& main_fold
     std::sort(files.begin(), files.end());
     for (const auto& file : files) read_definition_file(file);
   }
+  reading_standard_definitions_ = false;
 }
 
 void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
@@ -151,7 +176,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
       parser_.parse(text_, parsed_);
       if (parsed_.statement == Statement::Def) {
         if (parsed_.def_scope.empty()) parsed_.def_scope = "CHAN";  // a DEF in a GUD file is global
-        execute_def();
+        execute_def(true);
       } else if (parsed_.statement == Statement::Define) {
         define_macro(parsed_.call_name, trimmed(parsed_.macro_text));
       } else if (parsed_.statement == Statement::Extern) {
@@ -200,7 +225,9 @@ bool ProgramLoader::may_hold_macro() const {
 
 void ProgramLoader::expand_macros() {
   // Whole names outside strings and comments are replaced by their macro text (once: a macro's
-  // text is not expanded again, so a macro cannot recurse).
+  // text is not expanded again, so a macro cannot recurse). A DEFINE line is taken as written:
+  // a machine's own macro file defines names drycut's CYCLE_MACROS.DEF defined before it.
+  if (is_define_line(text_)) return;
   std::string out;
   out.reserve(text_.size() + 16);
   bool changed = false;

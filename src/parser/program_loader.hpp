@@ -42,6 +42,9 @@ struct LoaderOptions {
   bool missing_programs_warn = false;
   // Folders of definition files (GUD/MAC .DEF); *.DEF beside the main program are read too.
   std::vector<std::filesystem::path> definition_dirs;
+  // The first this many of them are drycut's own (CYCLE_MACROS.DEF, MEASURING_CYCLES_GUD.DEF):
+  // the names they define, the machine's own definition files may define again.
+  size_t standard_definition_dirs = 0;
   // Machine and setting data, inputs and PLC data by `$` name ("$MA_COMPRESS_POS_TOL[X1]").
   MachineDataMap machine_data;
   MachineDataTexts machine_data_texts;  // machine data of type STRING (axis names)
@@ -139,7 +142,9 @@ class ProgramLoader {
   void assign_system_variable(const Item& item, Block& out);
   CallArgument call_argument(ExprIndex e);
   // loader_definitions.cpp
-  void execute_def();
+  // `from_definition_file`: a name drycut's own definition files defined is defined anew (the
+  // machine's own GUD files, read after drycut's, win), not alarm 12170.
+  void execute_def(bool from_definition_file = false);
   void execute_proc();
   Variable make_variable(const DefEntry& d);
   void initialise(Variable& v, const DefEntry& d);
@@ -179,6 +184,7 @@ class ProgramLoader {
   void push_control(const ControlFrame& c);
 
   LoaderOptions options_;
+  bool reading_standard_definitions_ = false;  // read_definition_files: in drycut's own folder
   Diagnostics& diagnostics_;
   std::unique_ptr<ProgramFiles> files_;
   struct ArchivedProgram {

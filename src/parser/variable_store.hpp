@@ -31,6 +31,7 @@ class Variable {
   uint32_t dim(int k) const { return dims_[static_cast<size_t>(k)]; }
   size_t size() const { return static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]; }
   uint32_t def_line = 0;
+  bool standard_definition = false;  // from drycut's own definition files: may be defined again
 
   // The element an index list names; throws LineError 12410 / 17020 / 17030.
   size_t element(std::span<const Value> indices, uint32_t column) const;

@@ -56,10 +56,8 @@ SampledProgram sample_program(const std::filesystem::path& main_program, const m
   if (options.tool_centre) compensation.emplace(compressor, profile, compensation_diagnostics);
   TeeSink tee(programmed, compensation ? &*compensation : nullptr, result.compensation_alarm);
 
-  parser::LoaderOptions loader_options;
-  loader_options.search_path = options.search_path;
-  loader_options.max_steps = options.max_steps;
-  parser::add_machine(loader_options, profile);
+  parser::LoaderOptions loader_options = options.loader;
+  if (loader_options.axis_names.empty()) parser::add_machine(loader_options, profile);
   parser::ProgramLoader loader(loader_options, result.diagnostics);
   loader.open_main(main_program);
   interp::Interpreter interpreter(profile, tee, result.diagnostics);

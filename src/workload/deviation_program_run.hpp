@@ -9,6 +9,7 @@
 
 #include "machine/alarm.hpp"
 #include "machine/machine_profile.hpp"
+#include "parser/program_loader.hpp"
 #include "workload/deviation_path_sampler.hpp"
 
 namespace drycut::workload {
@@ -32,10 +33,13 @@ struct SampledProgram {
 };
 
 struct SampleOptions {
-  std::vector<std::filesystem::path> search_path;
+  // The loader's options as the other commands set them up (search path with the standard
+  // cycles, definition files such as CYCLE_MACROS.DEF, step limit): a program must read the same
+  // language here as in `run`. The machine's data and axis names are added from the profile when
+  // the options have none (parser::add_machine).
+  parser::LoaderOptions loader;
   double step_mm = 0.01;
   bool tool_centre = true;
-  uint64_t max_steps = 100'000'000;
 };
 
 // Throws UsageError when the program cannot be read.

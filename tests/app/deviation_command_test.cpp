@@ -53,6 +53,21 @@ TEST_F(DeviationCommand, CircleAgainstPolarReferenceWritesJson) {
   EXPECT_NE(out.find("over 2 of 2 points, 0 without crossing within 5 mm"), std::string::npos) << out;
 }
 
+TEST_F(DeviationCommand, ReadsTheSameDefinitionsAsRun) {
+  // CAM posts write CYCLE832(tol,_FINISH,1): _FINISH comes from drycut's CYCLE_MACROS.DEF, and a
+  // machine's own definition folder (--definitions) may define it again; deviation must read
+  // both as `run` does (before, it stopped at the CYCLE832 line with 12550 and measured nothing).
+  std::ofstream(dir_ / "F.MPF") << "N10 G17 G90 G54 T1 D1 M6\nN20 G0 X10 Y0 Z5\nN30 G1 Z0 F2000\n"
+                                   "N40 CYCLE832(0.01,_FINISH,1)\nN50 G3 X10 Y0 I-10 J0\nN60 G0 Z50\nN70 M30\n";
+  fs::create_directories(dir_ / "defs");
+  std::ofstream(dir_ / "defs" / "MYMACROS.DEF") << "DEFINE _OFF AS 0\nDEFINE _FINISH AS 1\nM17\n";
+  for (const std::string& extra : {std::string(), " --definitions '" + (dir_ / "defs").string() + "'"}) {
+    std::string out;
+    ASSERT_EQ(run("deviation '" + (dir_ / "F.MPF").string() + "' --polar 10" + extra, out), 0) << extra << out;
+    EXPECT_NE(out.find("loop 1"), std::string::npos) << extra << out;
+  }
+}
+
 TEST_F(DeviationCommand, HeldLineRangeDecidesWhatCountsAsACrossing) {
   // Circle r = 10 against the reference r = 10.5 (--polar 10.5): the point (-6, 9.5) holds Y;
   // the circle meets y = 9.5 at x = -sqrt(100 - 90.25) = -3.1225, 2.8775 mm away.

@@ -272,6 +272,27 @@ TEST_F(Loader, DefinitionFileAlarmNamesTheFileAndComesFromNext) {
   }
 }
 
+TEST_F(Loader, MachineDefinitionFilesDefineDrycutsStandardNamesAgain) {
+  // drycut's own definition folder (the first standard_definition_dirs of definition_dirs)
+  // defines _TSA and _FINISH; the machine's own files, read after it, define them again: their
+  // definitions are in force. A name defined twice by the machine's own files stays 12170 (above).
+  fs::create_directories(dir_ / "std");
+  fs::create_directories(dir_ / "machine");
+  write("std/GUD.DEF", "DEF CHAN REAL _TSA=1\nDEFINE _FINISH AS 1\nM17\n");
+  write("machine/GUD.DEF", "DEF CHAN REAL _TSA=7\nDEFINE _FINISH AS 2\nM17\n");
+  LoaderOptions options;
+  options.definition_dirs = {dir_ / "std", dir_ / "machine"};
+  options.standard_definition_dirs = 1;
+  EXPECT_EQ(xs(run("X=_TSA\nX=_FINISH\nM30\n", options)), (std::vector<double>{7, 2}));
+  // Without the mark the second DEF is one definition too many.
+  options.standard_definition_dirs = 0;
+  EXPECT_EQ(alarm_of("X=_TSA\nM30\n", options), 12170);
+  // A folder named twice (also the main program's own) is read once.
+  write("GUD.DEF", "DEF CHAN REAL _TSB=3\nM17\n");
+  options.definition_dirs = {dir_, dir_ / "machine"};
+  EXPECT_EQ(xs(run("X=_TSB\nM30\n", options)), (std::vector<double>{3}));
+}
+
 TEST_F(Loader, MissingMainIsUsageError) {
   ProgramLoader l({}, diagnostics_);
   EXPECT_THROW(l.open_main(dir_ / "NOPE.MPF"), UsageError);
