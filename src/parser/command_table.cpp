@@ -75,7 +75,14 @@ constexpr std::array kCommands{
     CommandEntry{"CUT3DFF", N}, CommandEntry{"CUT3DFS", N}, CommandEntry{"ORIEULER", N},
     CommandEntry{"ORIRPY", N}, CommandEntry{"ORIRPY2", N}, CommandEntry{"ORIPLANE", N},
     CommandEntry{"ORIC", N}, CommandEntry{"ORID", N}, CommandEntry{"OSOF", N},
-    CommandEntry{"OSC", N}, CommandEntry{"OSS", N}, CommandEntry{"OSSE", N}, CommandEntry{"PTP", N},
+    CommandEntry{"OSC", N}, CommandEntry{"OSS", N}, CommandEntry{"OSSE", N}, CommandEntry{"OSD", N},
+    CommandEntry{"OST", N}, CommandEntry{"PTP", N},
+    // ORIS= orientation smoothing factor; STAT= / TU= the joint position and turn of a
+    // Cartesian PTP move under TRAORI; STOLF= the G0 tolerance factor (MD20560), CTOLG0= /
+    // OTOLG0= the absolute G0 tolerances (Job Planning, "Tool orientation", "Cartesian PTP
+    // travel", "Tolerance for G0 motion"): valid, not modelled, warned.
+    CommandEntry{"ORIS", N}, CommandEntry{"STAT", N}, CommandEntry{"TU", N}, CommandEntry{"STOLF", N},
+    CommandEntry{"CTOLG0", N}, CommandEntry{"OTOLG0", N},
     CommandEntry{"CP", N}, CommandEntry{"PTPG0", N}, CommandEntry{"TRAANG", N},
     CommandEntry{"TRACON", N}, CommandEntry{"FIFOCTRL", E}, CommandEntry{"DRIVEA", N},
     CommandEntry{"ORICONCW", N}, CommandEntry{"ORICONCCW", N}, CommandEntry{"ORICONIO", N},
@@ -130,6 +137,17 @@ constexpr std::array kCommands{
     // Travel to fixed stop (Fundamentals, "Travel to fixed stop"): FXS[ax]=1/0, torque FXST[ax]=,
     // monitoring window FXSW[ax]=. The axis stops at the stop, not at the end point: warned.
     CommandEntry{"FXS", N},     CommandEntry{"FXST", N},    CommandEntry{"FXSW", N},
+    // Axis words written NAME[axis]=value (Job Planning): the fast retraction position POLF,
+    // oscillation (OS, OSP1/OSP2 reversal points, OST1/OST2 stop times, OSE end position,
+    // OSNSC spark-out strokes, OSCTRL options, OSB), leading-axis coupling limits
+    // (VELOLIMA/ACCLIMA/JERKLIMA), handwheel override FDA, axial feed of sync actions FMA,
+    // positioning in parts POSP, travel with limited torque FOCON/FOCOF. Valid, not modelled: warned.
+    CommandEntry{"POLF", N},    CommandEntry{"OS", N},      CommandEntry{"OSP1", N},
+    CommandEntry{"OSP2", N},    CommandEntry{"OST1", N},    CommandEntry{"OST2", N},
+    CommandEntry{"OSE", N},     CommandEntry{"OSNSC", N},   CommandEntry{"OSCTRL", N},
+    CommandEntry{"OSB", N},     CommandEntry{"VELOLIMA", N}, CommandEntry{"ACCLIMA", N},
+    CommandEntry{"JERKLIMA", N}, CommandEntry{"FDA", N},    CommandEntry{"FMA", N},
+    CommandEntry{"POSP", N},    CommandEntry{"FOCON", N},   CommandEntry{"FOCOF", N},
     // The remaining predefined procedures of the control (NC Programming / Job Planning, lists
     // "Predefined procedures"): files, curve tables, couplings, tool management, channel
     // coordination, protection areas, tangential control. Valid calls, not modelled: warned.
@@ -373,7 +391,7 @@ bool g_group_of_code(int code, int& group, int& index) {
 
 bool is_axis_indexed_command(std::string_view name) {
   return name == "DIAMONA" || name == "DIAMOFA" || name == "DIAM90A" || name == "DIACYCOFA" ||
-         name == "DIAMCHANA" || name == "SCC";
+         name == "DIAMCHANA" || name == "SCC" || name == "FOCON" || name == "FOCOF";
 }
 
 bool is_extended_address(std::string_view name) {

@@ -71,7 +71,7 @@ constexpr std::array kStatements{
     Row{"SETINT(n) PRIO=m NAME / ENABLE / DISABLE / CLRINT", N, "interrupt routines: accepted, never triggered in a dry run"},
     Row{"MCALL name(args) / MCALL", M, "modal call after every block with axis motion (not inside the called program); MCALL alone ends it"},
     Row{"DRYCUT_CONTOUR_BEGIN / DRYCUT_CONTOUR_END / DRYCUT_CONTOUR_CALL(\"NAME\", \"START:END\" or \"PROG:START:END\") / $DRYCUT_CONTOUR_N / $DRYCUT_CONTOUR[i,k]", M, "drycut's own, for its contour cycles (CYCLE95): record the contour of the blocks between, without moving, and read it (docs/cycles.md \"Contour cycles\")"},
-    Row{"PCALL / EXTCALL", M, "calls with a path / from external memory: run as CALL from drycut's folders (the path is dropped)"},
+    Row{"PCALL / EXTCALL", M, "calls with a path / from external memory: run as CALL from drycut's folders (the path is dropped); EXTCALL takes a STRING expression (\"PAL\" << R1); a name may carry the prefix _N_ and the extension _SPF/_MPF in any combination"},
 };
 
 constexpr std::array kOperators{

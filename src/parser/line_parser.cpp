@@ -528,6 +528,18 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     out.statement = Statement::Call;
     ++pos_;
     const bool paren = peek().kind == TokenKind::LParen;
+    const size_t k = paren ? 1 : 0;
+    const bool plain_name = (peek(k).kind == TokenKind::String || peek(k).kind == TokenKind::Name) &&
+                            (paren ? peek(k + 1).kind == TokenKind::RParen
+                                   : peek(k + 1).kind != TokenKind::Concat && peek(k + 1).kind != TokenKind::LBracket);
+    if (!plain_name) {
+      // A computed name, EXTCALL ("PAL" << R1) or EXTCALL NAMES[2]: a STRING expression (the
+      // argument's type is STRING), evaluated when the line runs, as CALL's.
+      out.target.column = peek().column;
+      out.target.expr = expression(out);
+      expect_end();
+      return true;
+    }
     if (paren) ++pos_;
     if (peek().kind != TokenKind::String && peek().kind != TokenKind::Name)
       throw LineError(12080, peek().column, "program name expected after EXTCALL");
@@ -598,8 +610,9 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
 }
 
 // PO[X]=(end, a2, ...) and PO[]=(b2, ...), MEASA[X]=(mode, trigger, ...) and MEAWA[X]=(..)
-// (Job Planning, "Extended measuring function"): the values are a list, as a procedure's
-// arguments. MEASA/MEAWA may also take a single value.
+// (Job Planning, "Extended measuring function"), OSCTRL[Z]=(set, reset) (oscillation options),
+// POSP[Z]=(end, part length, mode) (positioning in parts): the values are a list, as a
+// procedure's arguments. All but PO may also take a single value.
 void LineParser::parse_list_assignment(ParsedLine& out, Item& item) {
   const bool polynomial = item.name == "PO";
   ++pos_;  // the name
@@ -647,7 +660,8 @@ void LineParser::parse_words(ParsedLine& out) {
       parse_assignment_word(out, item, t);
     } else if (t.text == "R" && next.kind == TokenKind::LBracket) {
       parse_r_parameter_assignment(out, item);
-    } else if ((t.text == "PO" || t.text == "MEASA" || t.text == "MEAWA") && next.kind == TokenKind::LBracket) {
+    } else if ((t.text == "PO" || t.text == "MEASA" || t.text == "MEAWA" || t.text == "OSCTRL" || t.text == "POSP") &&
+               next.kind == TokenKind::LBracket) {
       parse_list_assignment(out, item);
     } else if (next.kind == TokenKind::LBracket) {
       parse_indexed_word(out, item);

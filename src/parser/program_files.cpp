@@ -69,6 +69,9 @@ std::optional<std::filesystem::path> ProgramFiles::find(const ProgramName& progr
   // external source": "_" or "." may attach it), when no program has the whole name.
   if (program.extension.empty() && n.size() > 4 && (ends_with(n, "_SPF") || ends_with(n, "_MPF")))
     return find(ProgramName{n.substr(0, n.size() - 4), n.substr(n.size() - 3)});
+  // The prefix without the extension ("_N_SUB" for SUB; Programming Manual: prefix, name and
+  // extension may be combined in a call), when no program has the whole name.
+  if (n.size() > 3 && n.rfind("_N_", 0) == 0) return find(ProgramName{n.substr(3), program.extension});
   return std::nullopt;
 }
 
