@@ -100,7 +100,7 @@ std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<
   return Value(actual ? interpreter_.actual_spindle_speed(spindle) : interpreter_.programmed_spindle_speed(spindle));
 }
 
-std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece) const {
+std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece, bool actual) const {
   if (indices.size() != 1) return std::nullopt;
   const std::string& axis = indices[0].text;
   if (axis.empty()) return std::nullopt;
@@ -108,7 +108,8 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
     return interpreter_.extra_axes().position(static_cast<size_t>(i));
   for (int k = 0; k < 3; ++k)
     if (axis[0] == profile_.axes[static_cast<size_t>(k)].name[0])
-      return workpiece ? interpreter_.workpiece_position()[k] : interpreter_.position()[k];
+      return workpiece ? interpreter_.workpiece_position(actual)[k]
+                       : actual ? interpreter_.actual_position()[k] : interpreter_.position()[k];
   return std::nullopt;
 }
 
@@ -176,9 +177,11 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   }
   // Workpiece coordinates ($P_EP programmed end point, $AA_IW/$VA_IW actual, $AA_IEN settable
   // zero system, taken as the workpiece system) and machine coordinates ($AA_IM/$VA_IM, $AA_IB
-  // basic system: the machine here); in a dry run the actual position is the programmed one.
-  if (n == "$P_EP" || n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN") return number(axis_position(indices, true));
-  if (n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB") return number(axis_position(indices, false));
+  // basic system: the machine here). In a dry run the actual position is where the path puts the
+  // tool: the programmed point, or under G41/G42 the compensated one (Interpreter::actual_position).
+  if (n == "$P_EP") return number(axis_position(indices, true, false));
+  if (n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN") return number(axis_position(indices, true, true));
+  if (n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB") return number(axis_position(indices, false, true));
   if (n == "$P_F") return Value(s.feed);
   // drycut's contour recording (contour_recording.hpp): the count and [element, column].
   if (n == "$DRYCUT_CONTOUR_N") return Value(static_cast<double>(interpreter_.recorded_contour().size()));

@@ -59,8 +59,8 @@ void Interpreter::orient_tool(const BlockContext& ctx, const std::string& comman
               column);
 }
 
-Vector3d Interpreter::workpiece_position() const {
-  Vector3d w = state_.frames.total(false).to_inner(position_ - length_applied_);
+Vector3d Interpreter::workpiece_position(bool actual) const {
+  Vector3d w = state_.frames.total(false).to_inner((actual ? actual_position() : position_) - length_applied_);
   const double unit = geometry_unit();
   for (int i = 0; i < 3; ++i) w[i] /= unit * state_.diameter.position_factor(i, false);
   return w;

@@ -1,4 +1,5 @@
-// Tool lengths 1..3 with their wear and base lengths on the axes by tool type and plane. Function Manual W1,
+// Tool lengths 1..3 with their wear and base lengths on the axes by tool type and plane, and the
+// reference point of a turning tool under G41/G42 (cutting edge position). Function Manual W1,
 // "Tool length compensation"; docs/controller-state.md "Tools and offsets". Every expected value
 // is worked out in the comments.
 #include "interp_test_support.hpp"
@@ -47,6 +48,33 @@ TEST(ToolLengths, GeometryWrittenAfterWearKeepsTheWear) {
       "IF (R1<>60) OR (R2<>-0.2) GOTOF BAD\nG18 T1 M6 D1\nG0 G500 Z0\nM30\nBAD: G0 X999\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   EXPECT_NEAR(r->sink.motions().front().curve->end()[2], 59.8, 1e-12);
+}
+
+// The compensation request of the first G41/G42 motion.
+CompensationRequest first_compensated(const std::string& program) {
+  auto r = run_program(program);
+  EXPECT_FALSE(r->alarm) << r->alarm->format();
+  for (const auto& m : r->sink.motions())
+    if (m.compensation.side != CompensationSide::None) return m.compensation;
+  ADD_FAILURE() << "no compensated motion";
+  return {};
+}
+
+TEST(ToolLengths, EdgePositionGivesTheTipFromTheEdgeCentre) {
+  // Edge position 3 in G18 (abscissa Z, ordinate X): P lies r behind S on both axes.
+  const std::string tool = "$TC_DP1[1,1]=500 $TC_DP6[1,1]=0.8 $TC_DP2[1,1]=";
+  const std::string moves = "\nT1 M6 D1\nG18 G42 G1 X20 Z2 F100\nZ-20\nM30\n";
+  EXPECT_TRUE(near(first_compensated(tool + "3" + moves).reference_shift, Vector3d(-0.8, 0, -0.8)));
+  // 5: P ahead of S on the abscissa only; 8: below it on the ordinate only.
+  EXPECT_TRUE(near(first_compensated(tool + "5" + moves).reference_shift, Vector3d(0, 0, 0.8)));
+  EXPECT_TRUE(near(first_compensated(tool + "8" + moves).reference_shift, Vector3d(-0.8, 0, 0)));
+  // 9: S is the reference point.
+  EXPECT_TRUE(near(first_compensated(tool + "9" + moves).reference_shift, Vector3d::Zero()));
+  // G17 (abscissa X, ordinate Y), position 2: (-r, +r).
+  const std::string g17 = "\nT1 M6 D1\nG17 G42 G1 X20 Y2 F100\nX-20\nM30\n";
+  EXPECT_TRUE(near(first_compensated(tool + "2" + g17).reference_shift, Vector3d(-0.8, 0.8, 0)));
+  // A milling tool has no edge position: its centre is the reference point.
+  EXPECT_TRUE(near(first_compensated("$TC_DP1[1,1]=120 $TC_DP2[1,1]=3" + moves).reference_shift, Vector3d::Zero()));
 }
 
 }  // namespace
