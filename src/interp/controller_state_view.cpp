@@ -1,6 +1,7 @@
 #include "interp/controller_state_view.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -99,7 +100,7 @@ std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<
   return Value(actual ? interpreter_.actual_spindle_speed(spindle) : interpreter_.programmed_spindle_speed(spindle));
 }
 
-std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece) const {
+std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece, bool actual) const {
   if (indices.size() != 1) return std::nullopt;
   const std::string& axis = indices[0].text;
   if (axis.empty()) return std::nullopt;
@@ -107,13 +108,15 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
     return interpreter_.extra_axes().position(static_cast<size_t>(i));
   for (int k = 0; k < 3; ++k)
     if (axis[0] == profile_.axes[static_cast<size_t>(k)].name[0])
-      return workpiece ? interpreter_.workpiece_position()[k] : interpreter_.position()[k];
+      return workpiece ? interpreter_.workpiece_position(actual)[k]
+                       : actual ? interpreter_.actual_position()[k] : interpreter_.position()[k];
   return std::nullopt;
 }
 
 std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<const Value> indices) const {
   // parameter: n of $TC_DPn, or kTeeth for $TC_DPNT.
-  // $TC_DPn[t, d]: edge d of tool t; DP3 = length 1, DP6 = radius, DP12/DP15 their wear.
+  // $TC_DPn[t, d]: edge d of tool t; DP1 type, DP2 edge position, DP3..5 lengths 1..3, DP6
+  // radius, DP12..15 their wear, DP21..23 base lengths.
   if (indices.size() != 2 || !indices[0].is_number() || !indices[1].is_number()) return std::nullopt;
   const machine::Tool* tool = interpreter_.tools().find(parser::number_to_text(indices[0].number));
   if (!tool) return 0.0;
@@ -121,11 +124,18 @@ std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<
     if (e.d != indices[1].number) continue;
     switch (parameter) {
       case 1: return static_cast<double>(e.type);
+      case 2: return static_cast<double>(e.edge_position);
       case 3: return e.length_mm - e.length_wear_mm;
-      case 4: return e.length2_mm;
+      case 4: return e.length2_mm - e.length2_wear_mm;
+      case 5: return e.length3_mm - e.length3_wear_mm;
       case 6: return e.radius_mm - e.radius_wear_mm;
       case 12: return e.length_wear_mm;
+      case 13: return e.length2_wear_mm;
+      case 14: return e.length3_wear_mm;
       case 15: return e.radius_wear_mm;
+      case 21:
+      case 22:
+      case 23: return e.base_mm[static_cast<size_t>(parameter - 21)];
       case kTeeth: return static_cast<double>(e.teeth);
       default: return 0.0;
     }
@@ -167,9 +177,11 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   }
   // Workpiece coordinates ($P_EP programmed end point, $AA_IW/$VA_IW actual, $AA_IEN settable
   // zero system, taken as the workpiece system) and machine coordinates ($AA_IM/$VA_IM, $AA_IB
-  // basic system: the machine here); in a dry run the actual position is the programmed one.
-  if (n == "$P_EP" || n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN") return number(axis_position(indices, true));
-  if (n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB") return number(axis_position(indices, false));
+  // basic system: the machine here). In a dry run the actual position is where the path puts the
+  // tool: the programmed point, or under G41/G42 the compensated one (Interpreter::actual_position).
+  if (n == "$P_EP") return number(axis_position(indices, true, false));
+  if (n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN") return number(axis_position(indices, true, true));
+  if (n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB") return number(axis_position(indices, false, true));
   if (n == "$P_F") return Value(s.feed);
   // drycut's contour recording (contour_recording.hpp): the count and [element, column].
   if (n == "$DRYCUT_CONTOUR_N") return Value(static_cast<double>(interpreter_.recorded_contour().size()));
@@ -185,29 +197,30 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
   if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
   if (n == "$P_TOOLL") {
-    // $P_TOOLL[1..3]: lengths 1, 2, 3 of the active edge (length 3 is not kept: 0); no index: length 1.
+    // $P_TOOLL[1..3]: the active edge's lengths 1, 2, 3 (geometry + wear + base); no index: length 1.
     const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 1.0;
-    return Value(k == 1 ? tools.offsets().length_mm : k == 2 ? tools.offsets().length2_mm : 0.0);
+    const ToolOffsets& o = tools.offsets();
+    return Value(k == 1 ? o.length_mm : k == 2 ? o.length2_mm : k == 3 ? o.length3_mm : 0.0);
   }
   if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
   if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
   // The master spindle's number (MD20090, SETMS(n)).
   if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));
   if (n == "$P_AD" && indices.size() == 1 && indices[0].is_number()) {
-    // $P_AD[n]: parameter n of the active cutting edge, as $TC_DPn[active tool, active D] (3 the
-    // length, 6 the radius, 12/15 their wear; the others read 0 here). No edge active: 0.
+    // $P_AD[n]: parameter n of the active cutting edge, as $TC_DPn[active tool, active D] (the
+    // ones tool_datum keeps; the others read 0 here). No edge active: 0.
     if (!tools.has_tool() || tools.edge() <= 0) return Value(0.0);
     const Value edge_indices[2] = {Value(tool_number(tools, tools.active_tool())), Value(static_cast<double>(tools.edge()))};
     const double k = indices[0].number;
     return number(tool_datum(k >= 1 && k <= 25 ? static_cast<int>(k) : 0, edge_indices));
   }
-  if (n == "$TC_DP1") return number(tool_datum(1, indices));
-  if (n == "$TC_DP3") return number(tool_datum(3, indices));
-  if (n == "$TC_DP4") return number(tool_datum(4, indices));
   if (n == "$TC_DPNT") return number(tool_datum(kTeeth, indices));
-  if (n == "$TC_DP6") return number(tool_datum(6, indices));
-  if (n == "$TC_DP12") return number(tool_datum(12, indices));
-  if (n == "$TC_DP15") return number(tool_datum(15, indices));
+  if (n.size() > 6 && n.substr(0, 6) == "$TC_DP" && std::isdigit(static_cast<unsigned char>(n[6]))) {
+    // The parameters drycut keeps: DP1..6, DP12..15, DP21..23 (the others as any unknown datum).
+    int k = 0;
+    for (char c : n.substr(6)) k = std::isdigit(static_cast<unsigned char>(c)) && k < 100 ? k * 10 + (c - '0') : 1000;
+    if ((k >= 1 && k <= 6) || (k >= 12 && k <= 15) || (k >= 21 && k <= 23)) return number(tool_datum(k, indices));
+  }
   if (n == "$TC_GETT" && indices.size() == 1) {
     if (const machine::Tool* t = tools.find(indices[0].text)) return Value(static_cast<double>(t->number));
     return Value(-1.0);

@@ -31,7 +31,8 @@ class InterpreterStateView : public parser::ControllerStateView {
   // $P_PFRAME, $P_UIFR[n], $P_IFRAME, $P_ACTFRAME ... whole or [axis, component] (frame_variable_reads.cpp).
   std::optional<parser::Value> frame_variable(std::string_view name, std::span<const parser::Value> indices) const;
   std::optional<parser::Value> spindle_speed(bool actual, std::span<const parser::Value> indices) const;
-  std::optional<double> axis_position(std::span<const parser::Value> indices, bool workpiece) const;
+  // `actual`: where the machine is ($AA_IM, $AA_IW), else the programmed point ($P_EP).
+  std::optional<double> axis_position(std::span<const parser::Value> indices, bool workpiece, bool actual) const;
   std::optional<double> tool_datum(int parameter, std::span<const parser::Value> indices) const;
   static int settable_frame_number(const std::string& work_offset);  // G54 -> 1 ...
   static parser::Value frame_value(const Frame& frame, double unit);  // CFRAME(...) text

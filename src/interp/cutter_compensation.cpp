@@ -109,6 +109,7 @@ CutterCompensation::CutterCompensation(ElementSink& downstream, const machine::M
     : downstream_(downstream), profile_(profile), diagnostics_(diagnostics) {}
 
 void CutterCompensation::consume(PathElement&& element) {
+  edge_reference_.apply(element);  // a turning tool's tip P, not its edge centre S, is guided
   if (phase_ == Phase::Inactive) {
     if (element.is_motion() && element.compensation.side != CompensationSide::None) {
       select(std::move(element));

@@ -61,6 +61,9 @@
 //   them in a row (Dwell, Stop, ToolChange, DynamicsChange, zero in-plane motion): alarm 10762.
 //   A plane other than the selection plane while active: alarm 10757.
 // - Radius or side changed while active: the two offsets are joined by a straight move.
+// - Turning tools with cutting edge position 1..8: the programmed elements are first moved by
+//   P - S (cutter_compensation_edge_reference.hpp), so the tip P, not the edge centre S, is the
+//   point the output guides.
 // Memory: the window holds the elements of the last CUTCOM_MAXNUM_CHECK_BLOCKS blocks (more
 // while a CDOF fold is open, at most kFoldSearchBlocks).
 #include <deque>
@@ -68,6 +71,7 @@
 
 #include "interp/cutter_compensation_corner.hpp"
 #include "interp/cutter_compensation_crossing.hpp"
+#include "interp/cutter_compensation_edge_reference.hpp"
 #include "interp/cutter_compensation_piece.hpp"
 #include "interp/path_element.hpp"
 #include "machine/alarm.hpp"
@@ -119,6 +123,7 @@ class CutterCompensation : public ElementSink {
   const machine::MachineProfile& profile_;
   Diagnostics& diagnostics_;
 
+  EdgeReferenceShift edge_reference_;
   Phase phase_ = Phase::Inactive;
   CompensationPlane plane_;
   int plane_axis_ = 2;

@@ -533,6 +533,7 @@ PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind k
   e.compensation.disc = state_.disc;
   e.compensation.plane_normal_axis = state_.plane_normal_axis();
   tilt_compensation_plane(ctx, e.compensation);
+  if (e.compensation.side != CompensationSide::None) e.compensation.reference_shift = edge_reference_shift(e.compensation);
   return e;
 }
 
@@ -582,6 +583,7 @@ void Interpreter::emit(PathElement&& element) {
     last_tangent_ = element.curve->at(element.curve->length()).tangent;
     has_last_tangent_ = true;
   }
+  if (element.is_motion() && element.curve) note_compensated_end(element);
   sink_.consume(std::move(element));
 }
 

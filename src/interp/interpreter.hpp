@@ -55,8 +55,12 @@ class Interpreter {
   const ModalState& state() const { return state_; }
   const Eigen::Vector3d& position() const { return position_; }
   // The tool tip in the workpiece system, in the program's units (G70/G71, DIAMON on a facing
-  // axis): what an absolute end point must say to come back here ($P_EP, $AA_IW).
-  Eigen::Vector3d workpiece_position() const;
+  // axis): what an absolute end point must say to come back here ($P_EP). `actual`: of the
+  // point the machine goes to (actual_position, $AA_IW).
+  Eigen::Vector3d workpiece_position(bool actual = false) const;
+  // Where the tool carrier actually is after the last block ($AA_IM): position() unless G41/G42
+  // moved it off the programmed contour (interpreter_compensated_position.cpp).
+  Eigen::Vector3d actual_position() const;
   // $P_UIFR[index] = frame (index 0 = G500, 1..4 = G54..G57, 5..99 = G505..G599). Takes effect
   // when the frame is next selected, as on the control; other indices are ignored.
   void set_settable_frame(int index, const Frame& frame);
@@ -217,8 +221,12 @@ class Interpreter {
   void report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices, uint32_t column);
   void program_tool(BlockContext& ctx, const std::string& id, uint32_t column);
   void change_tool(BlockContext& ctx);
-  // Tool length compensation: the length vector of the active edge along the plane normal.
+  // Tool length compensation: the lengths of the active edge on the axes (by type and plane).
   Eigen::Vector3d tool_length_vector() const;
+  // A turning tool's P - S under G41/G42 for the request's plane (CompensationRequest).
+  Eigen::Vector3d edge_reference_shift(const CompensationRequest& request) const;
+  // Remembers where the compensation puts the end of a compensated motion (actual_position).
+  void note_compensated_end(const PathElement& element);
   void orient_tool(const BlockContext& ctx, const std::string& command, uint32_t column);
   // Frames and polar coordinates.
   const Frame& block_frame(const BlockContext& ctx) const;
@@ -303,6 +311,9 @@ class Interpreter {
   Eigen::Vector3d length_applied_ = Eigen::Vector3d::Zero();
   bool has_last_tangent_ = false;
   Eigen::Vector3d last_tangent_ = Eigen::Vector3d::UnitX();
+  // The last motion was compensated (G41/G42): the carrier is this far off position_ at its end.
+  bool last_motion_compensated_ = false;
+  Eigen::Vector3d compensated_offset_ = Eigen::Vector3d::Zero();
   SplineRun spline_;
   BlockRef last_spline_block_;  // where an alarm of the run's last spans belongs
   SplineBlockQuota quota_;

@@ -16,23 +16,31 @@ using parser::ValueMode;
 using namespace detail;
 
 Vector3d Interpreter::tool_length_vector() const {
-  Vector3d length = Vector3d::Zero();
+  // The three lengths on the plane's axes by tool type (Function Manual W1, "Tool length
+  // compensation"; docs/controller-state.md): a turning tool (type 5xx) has length 1 along the
+  // ordinate, length 2 along the abscissa and length 3 along the normal (G18: X, Z, Y); every
+  // other tool (milling, drilling) length 1 along the normal, length 2 along the ordinate and
+  // length 3 along the abscissa (G17: Z, Y, X).
   const ToolOffsets& o = tools_.offsets();
+  const PlaneIndices plane = state_.plane_indices();
+  Vector3d length = Vector3d::Zero();
   if (o.type >= 500 && o.type <= 599) {
-    // A turning tool (W1, "Tool length compensation"): length 1 along the plane's ordinate,
-    // length 2 along its abscissa (G18: X and Z; G17: Y and X; G19: Z and Y).
-    const PlaneIndices plane = state_.plane_indices();
     length[plane.second] = o.length_mm;
     length[plane.first] = o.length2_mm;
+    length[plane.normal] = o.length3_mm;
     return length;
   }
-  length[state_.plane_normal_axis()] = tools_.offsets().length_mm;
+  length[plane.normal] = o.length_mm;
+  length[plane.second] = o.length2_mm;
+  length[plane.first] = o.length3_mm;
   // No swivel (nearly every block): the exact identity is answered without isIdentity's
   // tolerance test of nine coefficients.
   if (tool_orientation_ == Eigen::Matrix3d::Identity() || tool_orientation_.isIdentity()) return length;
-  // A swivel head (TCOABS/TCOFR): the length along the swivelled plane normal.
-  const Vector3d direction = tool_orientation_ * Vector3d::Unit(state_.plane_normal_axis());
-  return direction.normalized() * tools_.offsets().length_mm;
+  // A swivel head (TCOABS/TCOFR): each length along its swivelled axis.
+  Vector3d swivelled = Vector3d::Zero();
+  for (int i = 0; i < 3; ++i)
+    if (length[i] != 0.0) swivelled += (tool_orientation_ * Vector3d::Unit(i)).normalized() * length[i];
+  return swivelled;
 }
 
 void Interpreter::orient_tool(const BlockContext& ctx, const std::string& command, uint32_t column) {
@@ -51,8 +59,8 @@ void Interpreter::orient_tool(const BlockContext& ctx, const std::string& comman
               column);
 }
 
-Vector3d Interpreter::workpiece_position() const {
-  Vector3d w = state_.frames.total(false).to_inner(position_ - length_applied_);
+Vector3d Interpreter::workpiece_position(bool actual) const {
+  Vector3d w = state_.frames.total(false).to_inner((actual ? actual_position() : position_) - length_applied_);
   const double unit = geometry_unit();
   for (int i = 0; i < 3; ++i) w[i] /= unit * state_.diameter.position_factor(i, false);
   return w;

@@ -96,6 +96,10 @@ struct CompensationRequest {
   bool tilted = false;
   geometry::Vec3 tilted_first = geometry::Vec3::UnitX();
   geometry::Vec3 tilted_normal = geometry::Vec3::UnitZ();
+  // A turning tool with cutting edge position 1..8: the tool tip P the lengths are measured to,
+  // seen from the cutting edge centre S the compensation guides (P - S, in the plane, machine
+  // coordinates). Zero for every other tool: S is the reference point.
+  geometry::Vec3 reference_shift = geometry::Vec3::Zero();
 };
 
 // A channel axis beyond X, Y, Z moving with the element (a synchronized axis: rotary A/B/C,

@@ -111,7 +111,7 @@ void ToolState::activate_edge(int d, std::vector<ToolNotice>& notices) {
   }
   for (const auto& e : tool->edges) {
     if (e.d == d) {
-      offsets_ = {e.length_mm, e.radius_mm, e.teeth, e.type, e.length2_mm};
+      offsets_ = ToolOffsets::of(e);
       return;
     }
   }
@@ -131,34 +131,60 @@ machine::ToolEdge* ToolState::edge_for_write(int t, int d) {
   return &tool->edges.back();
 }
 
+namespace {
+
+// A geometry value written while its wear is kept: the sum is geometry + wear.
+void set_geometry(double& sum, double wear, double value) { sum = value + wear; }
+// A wear value written: the sum follows, the geometry part stays.
+void set_wear(double& sum, double& wear, double value) {
+  sum += value - wear;
+  wear = value;
+}
+
+}  // namespace
+
+ToolOffsets ToolOffsets::of(const machine::ToolEdge& e) {
+  ToolOffsets o;
+  o.length_mm = e.length_mm + e.base_mm[0];
+  o.radius_mm = e.radius_mm;
+  o.teeth = e.teeth;
+  o.type = e.type;
+  o.length2_mm = e.length2_mm + e.base_mm[1];
+  o.length3_mm = e.length3_mm + e.base_mm[2];
+  o.edge_position = e.edge_position;
+  return o;
+}
+
 bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
   if (parameter < 1 || parameter > 25) return false;
   machine::ToolEdge* edge = edge_for_write(t, d);
   if (!edge) return false;
   // The control adds each wear value to its geometry value (Fundamentals, "Tool offset data":
-  // DP12 wear of length 1, DP15 wear of the radius).
+  // DP12..DP14 wear of lengths 1..3, DP15 wear of the radius) and the base lengths DP21..DP23 to
+  // lengths 1..3 (W1, "Basic length 1 to 3"; added in ToolOffsets::of).
   switch (parameter) {
     case 1: edge->type = value >= 0 && value <= 999 ? static_cast<int>(value) : 0; break;
-    case 3: edge->length_mm = value + edge->length_wear_mm; break;
-    case 4: edge->length2_mm = value; break;
-    case 6: edge->radius_mm = value + edge->radius_wear_mm; break;
-    case 12:
-      edge->length_mm += value - edge->length_wear_mm;
-      edge->length_wear_mm = value;
-      break;
-    case 15:
-      edge->radius_mm += value - edge->radius_wear_mm;
-      edge->radius_wear_mm = value;
-      break;
+    case 2: edge->edge_position = value >= 0 && value <= 9 && value == std::floor(value) ? static_cast<int>(value) : 0; break;
+    case 3: set_geometry(edge->length_mm, edge->length_wear_mm, value); break;
+    case 4: set_geometry(edge->length2_mm, edge->length2_wear_mm, value); break;
+    case 5: set_geometry(edge->length3_mm, edge->length3_wear_mm, value); break;
+    case 6: set_geometry(edge->radius_mm, edge->radius_wear_mm, value); break;
+    case 12: set_wear(edge->length_mm, edge->length_wear_mm, value); break;
+    case 13: set_wear(edge->length2_mm, edge->length2_wear_mm, value); break;
+    case 14: set_wear(edge->length3_mm, edge->length3_wear_mm, value); break;
+    case 15: set_wear(edge->radius_mm, edge->radius_wear_mm, value); break;
+    case 21:
+    case 22:
+    case 23: edge->base_mm[static_cast<size_t>(parameter - 21)] = value; break;
     default: break;
   }
   // The active edge takes the new value at once (the control re-reads it with the next D or
-  // motion; drycut applies it with the next motion as for any length change).
+  // motion; drycut applies it with the next motion as for any length change). The number of
+  // teeth waits for the next D (set_edge_teeth).
   if (has_tool() && edge_ == d && find(*active_) && find(*active_)->number == t) {
-    offsets_.length_mm = edge->length_mm;
-    offsets_.radius_mm = edge->radius_mm;
-    offsets_.type = edge->type;
-    offsets_.length2_mm = edge->length2_mm;
+    const int teeth = offsets_.teeth;
+    offsets_ = ToolOffsets::of(*edge);
+    offsets_.teeth = teeth;
   }
   return true;
 }

@@ -35,12 +35,18 @@ struct ToolNotice {
   bool alarm = false;
 };
 
+// The offsets of the active edge as the control adds them (Function Manual W1, "Tool offset
+// data": each wear value adds to its geometry value, each base length to its length).
 struct ToolOffsets {
-  double length_mm = 0.0;  // length 1: $TC_DP3 + wear $TC_DP12
+  double length_mm = 0.0;  // length 1: $TC_DP3 + wear $TC_DP12 + base $TC_DP21
   double radius_mm = 0.0;  // radius: $TC_DP6 + wear $TC_DP15
   int teeth = 0;           // $TC_DPNT, number of teeth (G95 FZ); 0 = not known
   int type = 0;            // $TC_DP1 tool type (0: not given, a milling tool)
-  double length2_mm = 0.0; // $TC_DP4 length 2 (a turning tool's length in the plane's abscissa)
+  double length2_mm = 0.0; // length 2: $TC_DP4 + wear $TC_DP13 + base $TC_DP22
+  double length3_mm = 0.0; // length 3: $TC_DP5 + wear $TC_DP14 + base $TC_DP23
+  int edge_position = 0;   // $TC_DP2 cutting edge position (turning tools)
+
+  static ToolOffsets of(const machine::ToolEdge& edge);
 };
 
 class ToolState {
@@ -55,10 +61,11 @@ class ToolState {
   // The tool change (M6, or T with MD22550 = 0); `d` is a D written in the same block.
   void change_tool(std::optional<int> d, std::vector<ToolNotice>& notices);
 
-  // $TC_DP<parameter>[t, d] = value for the tool numbered t: 1 = tool type, 3 = length 1,
-  // 4 = length 2, 6 = radius, 12 and 15 the wear of length 1 and radius, added to them (mm);
-  // other parameters are accepted and do not change the path. A missing tool or edge is
-  // created. Returns false for a parameter or index out of the control's range.
+  // $TC_DP<parameter>[t, d] = value for the tool numbered t: 1 = tool type, 2 = cutting edge
+  // position, 3..5 = lengths 1..3, 6 = radius, 12..14 and 15 the wear of lengths 1..3 and of the
+  // radius, added to them, 21..23 base lengths 1..3 (mm); other parameters are accepted and do
+  // not change the path. A missing tool or edge is created. Returns false for a parameter or
+  // index out of the control's range.
   bool set_edge_parameter(int parameter, int t, int d, double value);
   // $TC_DPNT[t, d] = teeth. As on the control (Fundamentals, "Tooth feedrate (G95 FZ)") the
   // active edge takes the new number with the next D or tool change, not at once. Returns false

@@ -523,15 +523,16 @@ class Importer {
     }
   }
 
-  // Tool offsets as the tool data backup writes them: $TC_DP3[t,d] length 1, $TC_DP4 length 2 and
-  // $TC_DP6[t,d] radius of edge d of tool t, each plus its wear value ($TC_DP12, $TC_DP13,
-  // $TC_DP15), which the control adds; $TC_DP1 the tool type; $TC_DPNT[t,d] the number of teeth
-  // (tooth feed G95 FZ); $TC_TP2[t] the tool's name (else its number). Edges 1..12 as the profile
-  // takes them.
+  // Tool offsets as the tool data backup writes them: $TC_DP3/4/5[t,d] lengths 1..3 and
+  // $TC_DP6[t,d] radius of edge d of tool t, each plus its wear value ($TC_DP12/13/14, $TC_DP15),
+  // which the control adds; $TC_DP21..23 the base lengths; $TC_DP1 the tool type, $TC_DP2 the
+  // cutting edge position; $TC_DPNT[t,d] the number of teeth (tooth feed G95 FZ); $TC_TP2[t] the
+  // tool's name (else its number). Edges 1..12 as the profile takes them.
   void read_tools() {
     struct Edge {
-      double length = 0, radius = 0, length2 = 0;
-      int teeth = 0, type = 0;
+      double length = 0, radius = 0, length2 = 0, length3 = 0;
+      std::array<double, 3> base{0.0, 0.0, 0.0};
+      int teeth = 0, type = 0, position = 0;
       const MachineDatum *length_from = nullptr, *radius_from = nullptr;
     };
     std::map<int, std::map<int, Edge>> tools;
@@ -541,24 +542,34 @@ class Importer {
       if (d.area != "TC" || !v || d.index.size() != 2 || !all_digits(d.index[0]) || !all_digits(d.index[1])) continue;
       const bool length = d.name == "DP3" || d.name == "DP12", radius = d.name == "DP6" || d.name == "DP15";
       const bool teeth = d.name == "DPNT" && *v >= 0 && *v <= 32000 && *v == std::floor(*v);
-      // $TC_DP1 the tool type, $TC_DP4 length 2 plus its wear $TC_DP13 (a turning tool's lengths).
+      // $TC_DP1 the tool type, $TC_DP2 the edge position, lengths 2 and 3 with their wear, the
+      // base lengths.
       const bool type = d.name == "DP1" && *v >= 0 && *v <= 999 && *v == std::floor(*v);
-      const bool length2 = d.name == "DP4" || d.name == "DP13";
+      const bool position = d.name == "DP2" && *v >= 0 && *v <= 9 && *v == std::floor(*v);
+      const bool length2 = d.name == "DP4" || d.name == "DP13", length3 = d.name == "DP5" || d.name == "DP14";
+      const int base = d.name == "DP21" ? 0 : d.name == "DP22" ? 1 : d.name == "DP23" ? 2 : -1;
+      const bool other = type || position || length2 || length3 || base >= 0;
       const int t = std::stoi(d.index[0]), e = std::stoi(d.index[1]);
-      if ((!length && !radius && !teeth && !type && !length2) || t > 32000 || e < 1 || e > 12) continue;
+      if ((!length && !radius && !teeth && !other) || t > 32000 || e < 1 || e > 12) continue;
       Edge& edge = tools[t][e];
       if (teeth)
         edge.teeth = static_cast<int>(*v);
       else if (type)
         edge.type = static_cast<int>(*v);
+      else if (position)
+        edge.position = static_cast<int>(*v);
       else if (length2)
         edge.length2 += *v;
+      else if (length3)
+        edge.length3 += *v;
+      else if (base >= 0)
+        edge.base[static_cast<size_t>(base)] = *v;
       else
         (length ? edge.length : edge.radius) += *v;
       if (d.name == "DP3") edge.length_from = &d;
       if (d.name == "DP6") edge.radius_from = &d;
-      // The type and length 2 stay readable as machine data too ($TC_DP1 in a tool macro).
-      if (!type && !length2) slot.used = true;
+      // These stay readable as machine data too ($TC_DP1 in a tool macro).
+      if (!other) slot.used = true;
     }
     std::set<std::string> names;
     for (const auto& [t, edges] : tools) {
@@ -587,6 +598,9 @@ class Importer {
         ToolEdge te{d, edge.radius, edge.length, edge.teeth};
         te.type = edge.type;
         te.length2_mm = edge.length2;
+        te.length3_mm = edge.length3;
+        te.base_mm = edge.base;
+        te.edge_position = edge.position;
         tool.edges.push_back(te);
       }
       out_.profile.tools.push_back(tool);

@@ -14,8 +14,9 @@
 //     arrays take index 0 (DYNNORM), gear-stage arrays gear stage 1. Per-axis factors the profile
 //     holds once (MD32310, MD32433-32435) take the smallest over the geometry axes.
 //     Data backups of the same text form add the settable frames ($P_UIFR[n,X,TR/FI/RT] → work
-//     offsets G54…), the tool offsets ($TC_DP3/$TC_DP6 plus wear $TC_DP12/$TC_DP15, names
-//     $TC_TP2) and the swivel type ($TC_CARR23).
+//     offsets G54…), the tool offsets ($TC_DP3..5/$TC_DP6 plus wear $TC_DP12..15, base lengths
+//     $TC_DP21..23, type $TC_DP1, cutting edge position $TC_DP2, names $TC_TP2) and the swivel
+//     type ($TC_CARR23).
 //  3. Missing. A datum the profile needs but the files lack keeps drycut's documented default;
 //     each one is listed (which datum, which default).
 //  4. The rest. Every numeric datum not mapped goes to `machine_data` under the name a program

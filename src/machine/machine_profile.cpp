@@ -175,6 +175,13 @@ ToolEdge read_edge(const json& node, const std::string& path) {
     e.type = static_cast<int>(*n);
   }
   if (auto v = r.quantity("length2", Dimension::Length)) e.length2_mm = *v;
+  if (auto v = r.quantity("length3", Dimension::Length)) e.length3_mm = *v;
+  for (size_t i = 0; i < 3; ++i)
+    if (auto v = r.quantity("base_length" + std::to_string(i + 1), Dimension::Length)) e.base_mm[i] = *v;
+  if (auto n = r.integer("cutting_edge_position")) {
+    if (*n < 0 || *n > 9) r.fail("cutting_edge_position", "must be in [0, 9] ($TC_DP2)");
+    e.edge_position = static_cast<int>(*n);
+  }
   r.reject_unknown_keys();
   return e;
 }
@@ -346,6 +353,10 @@ std::string profile_to_json(const MachineProfile& p) {
       if (e.teeth > 0) edge["teeth"] = e.teeth;
       if (e.type > 0) edge["type"] = e.type;
       if (e.length2_mm != 0) edge["length2_mm"] = e.length2_mm;
+      if (e.length3_mm != 0) edge["length3_mm"] = e.length3_mm;
+      for (size_t i = 0; i < 3; ++i)
+        if (e.base_mm[i] != 0) edge["base_length" + std::to_string(i + 1) + "_mm"] = e.base_mm[i];
+      if (e.edge_position != 0) edge["cutting_edge_position"] = e.edge_position;
       edges.push_back(edge);
     }
     tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});

@@ -74,11 +74,21 @@ struct ToolEdge {
   // table already holds the sums).
   double radius_wear_mm = 0;
   double length_wear_mm = 0;
-  // $TC_DP1 tool type (120 end mill, 500..599 turning tools ...; 0 not given: a milling tool) and
-  // $TC_DP4 length 2: a turning tool's lengths act in the plane (Function Manual W1, "Tool length
-  // compensation": G18 length 1 in X, length 2 in Z), a milling tool's length 1 along its normal.
+  // $TC_DP1 tool type (120 end mill, 500..599 turning tools ...; 0 not given: a milling tool).
   int type = 0;
+  // Lengths 2 and 3 ($TC_DP4, $TC_DP5), geometry + wear ($TC_DP13, $TC_DP14; the program's wear
+  // parts kept as for length 1). Which axis each length acts on depends on the tool type and the
+  // plane (Function Manual W1, "Tool length compensation"; docs/controller-state.md).
   double length2_mm = 0;
+  double length3_mm = 0;
+  double length2_wear_mm = 0;
+  double length3_wear_mm = 0;
+  // $TC_DP21..23 base (adapter) lengths 1..3, added to lengths 1..3 for every tool type (W1,
+  // "Basic length 1 to 3").
+  std::array<double, 3> base_mm{0.0, 0.0, 0.0};
+  // $TC_DP2 cutting edge position of a turning tool: 1..8 where the theoretical tip P lies from the
+  // cutting edge centre S, 9 (or 0: not given) S is the reference point.
+  int edge_position = 0;
 };
 
 struct Tool {

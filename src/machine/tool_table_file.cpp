@@ -43,7 +43,11 @@ int integer_cell(const std::string& text, int low, int high, const std::string& 
 }  // namespace
 
 std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string& origin) {
-  static const std::vector<std::string> kColumns{"number", "name", "d", "length_mm", "radius_mm", "teeth", "type", "length2_mm"};
+  static const std::vector<std::string> kColumns{"number",          "name",           "d",
+                                                 "length_mm",       "radius_mm",      "teeth",
+                                                 "type",            "length2_mm",     "length3_mm",
+                                                 "base_length1_mm", "base_length2_mm", "base_length3_mm",
+                                                 "cutting_edge_position"};
   std::istringstream in(text);
   std::string line;
   std::map<std::string, size_t> column;
@@ -56,7 +60,9 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
     if (column.empty()) {
       for (size_t i = 0; i < cells.size(); ++i) {
         if (std::find(kColumns.begin(), kColumns.end(), cells[i]) == kColumns.end())
-          throw ProfileError(where + ": unknown column '" + cells[i] + "' (columns: number,name,d,length_mm,radius_mm,teeth,type,length2_mm)");
+          throw ProfileError(where + ": unknown column '" + cells[i] +
+                             "' (columns: number,name,d,length_mm,radius_mm,teeth,type,length2_mm,length3_mm,"
+                             "base_length1_mm,base_length2_mm,base_length3_mm,cutting_edge_position)");
         column[cells[i]] = i;
       }
       if (!column.count("number") || !column.count("d")) throw ProfileError(where + ": the header needs columns number and d");
@@ -75,6 +81,13 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
     if (!cell("teeth").empty()) edge.teeth = integer_cell(cell("teeth"), 0, 32000, where + " teeth");
     if (!cell("type").empty()) edge.type = integer_cell(cell("type"), 0, 999, where + " type");
     if (!cell("length2_mm").empty()) edge.length2_mm = number_cell(cell("length2_mm"), where + " length2_mm");
+    if (!cell("length3_mm").empty()) edge.length3_mm = number_cell(cell("length3_mm"), where + " length3_mm");
+    for (size_t i = 0; i < 3; ++i) {
+      const std::string base = "base_length" + std::to_string(i + 1) + "_mm";
+      if (!cell(base).empty()) edge.base_mm[i] = number_cell(cell(base), where + " " + base);
+    }
+    if (!cell("cutting_edge_position").empty())
+      edge.edge_position = integer_cell(cell("cutting_edge_position"), 0, 9, where + " cutting_edge_position");
     const std::string name = cell("name").empty() ? std::to_string(number) : cell("name");
     auto it = std::find_if(tools.begin(), tools.end(), [&](const Tool& t) { return t.number == number; });
     if (it == tools.end()) {

@@ -153,6 +153,24 @@ TEST(MachineDataImport, ToolOffsetsAndSwivelTypeFromTheToolData) {
   EXPECT_EQ(r.sources.at("tools[0].edges[0].length_mm").origin, kFile + ":104");
 }
 
+TEST(MachineDataImport, TurningToolLengthsWearBaseAndEdgePosition) {
+  // A tool data backup of a turning tool: each length is geometry + wear (60 - 0.2, 5 + 0.3), the
+  // base lengths and the cutting edge position are kept per edge.
+  const MachineDataImport r = import_text(
+      "$TC_DP1[3,1]=500\n$TC_DP2[3,1]=3\n$TC_DP3[3,1]=40\n$TC_DP4[3,1]=60\n$TC_DP5[3,1]=5\n"
+      "$TC_DP13[3,1]=-0.2\n$TC_DP14[3,1]=0.3\n$TC_DP21[3,1]=1\n$TC_DP23[3,1]=2.5\n");
+  const Tool* tool = r.profile.find_tool(3);
+  ASSERT_NE(tool, nullptr);
+  const ToolEdge& e = tool->edges.at(0);
+  EXPECT_DOUBLE_EQ(e.length_mm, 40.0);
+  EXPECT_NEAR(e.length2_mm, 59.8, 1e-12);
+  EXPECT_NEAR(e.length3_mm, 5.3, 1e-12);
+  EXPECT_DOUBLE_EQ(e.base_mm[0], 1.0);
+  EXPECT_DOUBLE_EQ(e.base_mm[1], 0.0);
+  EXPECT_DOUBLE_EQ(e.base_mm[2], 2.5);
+  EXPECT_EQ(e.edge_position, 3);
+}
+
 TEST(MachineDataImport, SourcesNameTheDatumAndLine) {
   const MachineDataImport r = import_test_file();
   const ValueSource& v = r.sources.at("axes.X.max_velocity_mm_min");

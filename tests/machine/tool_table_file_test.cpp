@@ -36,6 +36,25 @@ TEST(ToolTableCsv, TeethColumnIsOptional) {
   EXPECT_EQ(json_tools[0].edges[0].teeth, 3);
 }
 
+TEST(ToolTableCsv, LengthsThreeBaseAndEdgePosition) {
+  // Length 3 ($TC_DP5), base lengths ($TC_DP21..23), cutting edge position ($TC_DP2).
+  const auto tools = load_tool_table_csv(
+      "number,d,type,length3_mm,base_length1_mm,base_length2_mm,base_length3_mm,cutting_edge_position\n"
+      "1,1,500,4.5,1,2,3,3\n", "t.csv");
+  const ToolEdge& e = tools.at(0).edges.at(0);
+  EXPECT_DOUBLE_EQ(e.length3_mm, 4.5);
+  EXPECT_DOUBLE_EQ(e.base_mm[0], 1.0);
+  EXPECT_DOUBLE_EQ(e.base_mm[2], 3.0);
+  EXPECT_EQ(e.edge_position, 3);
+  EXPECT_THROW(load_tool_table_csv("number,d,cutting_edge_position\n1,1,10\n", "t.csv"), ProfileError);
+  // JSON: the profile's edge keys.
+  const auto json_tools = load_tools_json(
+      R"([{"name":"T","number":1,"edges":[{"d":1,"length3_mm":2,"base_length2_mm":7,"cutting_edge_position":8}]}])", "t.json");
+  EXPECT_DOUBLE_EQ(json_tools[0].edges[0].length3_mm, 2.0);
+  EXPECT_DOUBLE_EQ(json_tools[0].edges[0].base_mm[1], 7.0);
+  EXPECT_EQ(json_tools[0].edges[0].edge_position, 8);
+}
+
 TEST(ToolTableCsv, ColumnsMayComeInAnyOrder) {
   const auto tools = load_tool_table_csv("d,radius_mm,number\n2,3,5\n", "t.csv");
   ASSERT_EQ(tools.size(), 1u);
