@@ -9,6 +9,7 @@
 
 #include "parser/ascii_case.hpp"
 #include "parser/line_error.hpp"
+#include "parser/plain_decimal.hpp"
 
 namespace drycut::parser {
 namespace {
@@ -44,39 +45,6 @@ size_t scan_number(std::string_view s, size_t i) {
     }
   }
   return i;
-}
-
-// Digits with at most one point, read from s[i] on: their integer, how many digits, how many
-// after the point (-1: no point). With at most 15 significant digits the integer and the power of
-// ten are exact doubles, so one division gives the correctly rounded value from_chars would.
-struct PlainDecimal {
-  uint64_t mantissa = 0;
-  int count = 0;
-  int decimals = -1;
-  size_t end = 0;  // where the digits stop
-  bool exact() const { return count > 0 && count <= 15; }
-  double value() const {
-    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-    return static_cast<double>(mantissa) / kPow10[decimals > 0 ? decimals : 0];
-  }
-};
-
-PlainDecimal scan_plain_decimal(std::string_view s, size_t i) {
-  PlainDecimal d;
-  for (; i < s.size(); ++i) {
-    const char c = s[i];
-    if (is_digit(c)) {
-      d.mantissa = d.mantissa * 10 + static_cast<uint64_t>(c - '0');  // wraps past 19 digits: not exact()
-      ++d.count;
-      if (d.decimals >= 0) ++d.decimals;
-    } else if (c == '.' && d.decimals < 0) {
-      d.decimals = 0;
-    } else {
-      break;
-    }
-  }
-  d.end = i;
-  return d;
 }
 
 // The whole text a plain decimal of at most 15 digits: its value, else false.
@@ -115,18 +83,12 @@ inline void push(std::vector<Token>& out, std::string_view s, TokenKind k, size_
   out.push_back(Token{k, col(start), s.substr(start, len), 0.0});
 }
 
-// '&' acts like a space on SINUMERIK, and so do the non-printable characters (Fundamentals,
-// "Character set": "Non-printable special characters are treated like blanks").
-inline bool is_blank(char c) {
-  return c == ' ' || c == '&' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F;
-}
-
 // The number starting at i as a Number token; returns its end. A plain decimal (digits with at
 // most one point, no EX) is converted as it is scanned, to the value fast_decimal gives: the
 // coordinates of a CAM program are read once instead of three times.
 inline size_t lex_number(std::string_view s, size_t i, std::vector<Token>& out) {
   const PlainDecimal d = scan_plain_decimal(s, i);
-  const bool plain = d.end + 1 >= s.size() || s[d.end] != 'E' || s[d.end + 1] != 'X';
+  const bool plain = !exponent_follows(s, d.end);
   const size_t end = plain ? d.end : scan_number(s, i);
   Token t{TokenKind::Number, col(i), s.substr(i, end - i), 0.0};
   t.number = plain && d.exact() ? d.value() : to_double(t.text, t.column);
@@ -224,16 +186,25 @@ inline std::pair<TokenKind, size_t> operator_at(std::string_view s, size_t i) {
 
 }  // namespace
 
-void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
-  out.clear();
+std::string_view Lexer::upper_case(std::string_view line) {
   upper_.assign(line);
   to_upper_ascii(upper_);
+  return upper_;
+}
+
+void Lexer::tokenize(std::string_view line, std::vector<Token>& out) {
+  upper_case(line);
+  tokenize_upper_cased(line, out);
+}
+
+void Lexer::tokenize_upper_cased(std::string_view line, std::vector<Token>& out) {
+  out.clear();
   const std::string_view s = upper_;
   const size_t n = s.size();
   size_t i = 0;
   while (i < n) {
     const char c = s[i];
-    if (is_blank(c)) {
+    if (is_lexer_blank(c)) {
       ++i;
       continue;
     }

@@ -8,6 +8,7 @@
 #include "parser/command_table.hpp"
 #include "parser/expression_parser.hpp"
 #include "parser/line_error.hpp"
+#include "parser/plain_word_line.hpp"
 
 namespace drycut::parser {
 namespace {
@@ -55,9 +56,21 @@ void LineParser::expect_end() {
 }
 
 void LineParser::parse(std::string_view line, ParsedLine& out) {
-  out.clear();
   line_ = line;
-  lexer_.tokenize(line, tokens_);
+  // Most lines of a CAM program are plain words ("G1 X12.5 Y-3"): read without tokens.
+  if (parse_plain_word_line(lexer_.upper_case(line), out)) return;
+  parse_tokens(out);
+}
+
+void LineParser::parse_general(std::string_view line, ParsedLine& out) {
+  line_ = line;
+  lexer_.upper_case(line);
+  parse_tokens(out);
+}
+
+void LineParser::parse_tokens(ParsedLine& out) {
+  out.clear();
+  lexer_.tokenize_upper_cased(line_, tokens_);
   pos_ = 0;
   parse_head(out);
   if (parse_statement(out)) {

@@ -16,9 +16,13 @@ class LineParser {
  public:
   // Parses `line` (decoded UTF-8, must outlive the result) into `out`. Throws LineError.
   void parse(std::string_view line, ParsedLine& out);
+  // The same without the plain-word fast path (plain_word_line.hpp): tokens, then the grammar.
+  // parse gives every line the result this gives it; tests compare the two.
+  void parse_general(std::string_view line, ParsedLine& out);
   const std::vector<Token>& tokens() const { return tokens_; }
 
  private:
+  void parse_tokens(ParsedLine& out);  // the general path on the line the lexer upper-cased last
   void parse_head(ParsedLine& out);
   bool parse_statement(ParsedLine& out);
   // parse_statement's statements with a syntax of their own; true (the line is a statement).
