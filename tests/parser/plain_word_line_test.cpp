@@ -99,7 +99,9 @@ TEST(PlainWordLine, TakesCamBlocksAsTheGeneralPathReadsThem) {
       "g1 x1 y2 f100", "A90 B-45.5 C.125", "H1 H2 H3", "X10 X20", "N5 ; only a number"};
   for (const char* line : plain) {
     const bool taken = compare("G2 X1 Y2 I3 J4", line);
-    if (std::string(line) != "G64 SOFT_") EXPECT_TRUE(taken) << line;
+    if (std::string(line) != "G64 SOFT_") {
+      EXPECT_TRUE(taken) << line;
+    }
   }
 }
 
