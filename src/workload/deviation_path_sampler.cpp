@@ -22,6 +22,7 @@ void PathSampler::consume(interp::PathElement&& element) {
     sampled.points.push_back(element.curve->at(length * static_cast<double>(i) / static_cast<double>(n)).position);
   sampled.source = std::move(element.source);
   sampled.rapid = element.rapid;
+  sampled.arc = element.kind == interp::ElementKind::Arc;
   sampled.compensation = element.compensation;
   elements_.push_back(std::move(sampled));
 }

@@ -13,6 +13,7 @@ struct SampledElement {
   std::vector<Vec3> points;  // at s = 0, h, ..., L (both ends included)
   BlockRef source;
   bool rapid = false;
+  bool arc = false;  // a circle or helix (G2/G3, CIP, CT): a curve the program states exactly
   interp::CompensationRequest compensation;
   const Vec3& start() const { return points.front(); }
   const Vec3& end() const { return points.back(); }

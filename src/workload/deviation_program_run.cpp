@@ -1,5 +1,7 @@
 #include "workload/deviation_program_run.hpp"
 
+#include <algorithm>
+
 #include "interp/block_compressor.hpp"
 #include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
@@ -41,6 +43,20 @@ class TeeSink : public interp::ElementSink {
   std::optional<Alarm>& branch_alarm_;
 };
 
+// The path the block just made (its elements from `first` on) when one of them is an arc and
+// they end where the block ended: their points without the block's end point. None for any other
+// block (straight lines add nothing to the polyline; an arc held back by a corner word belongs
+// to a later point and is judged against its chord there).
+std::vector<Vec3> arc_points(const std::vector<SampledElement>& elements, size_t first, const Vec3& end) {
+  std::vector<Vec3> via;
+  if (first >= elements.size() || (elements.back().end() - end).norm() > 1e-9) return via;
+  if (std::none_of(elements.begin() + static_cast<long>(first), elements.end(), [](const SampledElement& e) { return e.arc; }))
+    return via;
+  for (size_t i = first; i < elements.size(); ++i) via.insert(via.end(), elements[i].points.begin() + 1, elements[i].points.end());
+  via.pop_back();  // `end` itself
+  return via;
+}
+
 }  // namespace
 
 SampledProgram sample_program(const std::filesystem::path& main_program, const machine::MachineProfile& profile,
@@ -62,14 +78,17 @@ SampledProgram sample_program(const std::filesystem::path& main_program, const m
   loader.open_main(main_program);
   interp::Interpreter interpreter(profile, tee, result.diagnostics);
   parser::Block block;
-  result.programmed_points.push_back({interpreter.position(), true, {}});
+  result.programmed_points.push_back({interpreter.position(), true, {}, {}});
   try {
     while (loader.next(block)) {
+      const size_t elements_before = programmed.elements().size();
       interpreter.execute(block);
-      if ((interpreter.position() - result.programmed_points.back().position).norm() > 1e-12)
+      // A full circle ends where it started: a point too.
+      std::vector<Vec3> via = arc_points(programmed.elements(), elements_before, interpreter.position());
+      if ((interpreter.position() - result.programmed_points.back().position).norm() > 1e-12 || !via.empty())
         result.programmed_points.push_back({interpreter.position(),
                                             interpreter.state().motion == interp::MotionMode::Rapid,
-                                            BlockRef{block.file, block.line, block.text}});
+                                            BlockRef{block.file, block.line, block.text}, std::move(via)});
       if (interpreter.ended()) break;
     }
   } catch (const AlarmError& e) {

@@ -21,6 +21,9 @@ struct ProgrammedPoint {
   Vec3 position = Vec3::Zero();
   bool rapid = false;
   BlockRef source;  // the block that ends here (none for the start position)
+  // Points of an arc the block programs (G2/G3, CIP, CT), between the previous point and this
+  // one: the programmed contour follows the circle there, not its chord.
+  std::vector<Vec3> via;
 };
 
 struct SampledProgram {

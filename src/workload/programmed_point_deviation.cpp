@@ -73,11 +73,15 @@ double PolylineDistance::distance(const Vec3& p) const {
 
 ProgrammedPointDeviation programmed_point_deviation(const std::vector<ProgrammedPoint>& points,
                                                     const std::vector<SampledElement>& elements) {
-  std::vector<std::vector<Vec3>> programmed, path;
+  // `programmed`: the programmed points of each run, as the polylines' corners; `contour`: the
+  // same runs with the points of the programmed arcs between them, what the path is measured to.
+  std::vector<std::vector<Vec3>> programmed, contour, path;
   std::vector<std::vector<const BlockRef*>> programmed_source;
   for (const ProgrammedPoint& p : points) {
-    if (p.rapid || programmed.empty()) programmed.emplace_back(), programmed_source.emplace_back();
+    if (p.rapid || programmed.empty()) programmed.emplace_back(), programmed_source.emplace_back(), contour.emplace_back();
+    if (!p.rapid) contour.back().insert(contour.back().end(), p.via.begin(), p.via.end());
     programmed.back().push_back(p.position);
+    contour.back().push_back(p.position);
     programmed_source.back().push_back(&p.source);
   }
   bool in_run = false;
@@ -95,10 +99,11 @@ ProgrammedPointDeviation programmed_point_deviation(const std::vector<Programmed
     if (programmed[i].size() < 2) {
       programmed.erase(programmed.begin() + static_cast<long>(i));
       programmed_source.erase(programmed_source.begin() + static_cast<long>(i));
+      contour.erase(contour.begin() + static_cast<long>(i));
     }
   ProgrammedPointDeviation result;
   result.polylines = programmed.size();
-  const PolylineDistance to_programmed(programmed), to_path(path);
+  const PolylineDistance to_programmed(contour), to_path(path);
   StatsSum along, at_points;
   for (const SampledElement& e : elements)
     if (!e.rapid)

@@ -1,8 +1,8 @@
 #pragma once
 // How far the interpolated path strays from the program's own points (`drycut deviation
 // --programmed-points`): the programmed polyline joins the end points of the feed blocks as the
-// interpreter reaches them (G1 end points, spline knots; a rapid's end point starts a new
-// polyline), and the path is the interpolated feed path sampled by arc length. Two figures, both in 3-D:
+// interpreter reaches them (G1 end points, spline knots, arcs along their circle; a rapid's end
+// point starts a new polyline), and the path is the interpolated feed path sampled by arc length. Two figures, both in 3-D:
 //   path -> polyline: for every path sample its distance to the nearest point of any programmed
 //     polyline (how far smoothing or a spline bulges between the points);
 //   points -> path: for every programmed point its distance to the sampled path (how far the
@@ -11,7 +11,8 @@
 // Distances are exact point-to-segment distances; the segments are grouped in chunks of 32 with
 // a bounding box each, and a chunk whose box is farther than the best distance so far is
 // skipped (the previous query's best chunk is tried first, so a walk along the path stays cheap).
-// Arcs are judged against their chord: the mode is meant for point programs.
+// A programmed arc (G2/G3, CIP, CT) is part of the programmed contour as the circle it is, not
+// its chord: the polyline runs through the arc's own points (ProgrammedPoint::via).
 #include <cstddef>
 #include <vector>
 

@@ -57,7 +57,7 @@ TEST(PolylineDistance, ChunksFarFromThePointAreSkippedNotMissed) {
 TEST(ProgrammedPointDeviation, SemicircleOverItsChord) {
   // Programmed (0,0) -> (10,0), the path the upper semicircle about (5,0): the path is up to
   // 5 mm off the chord, 5 sin(a) on average over a = 0..pi: 10/pi; it passes through both points.
-  const std::vector<ProgrammedPoint> points{{Vec3(0, 0, 0), true, {}}, {Vec3(10, 0, 0), false, {}}};
+  const std::vector<ProgrammedPoint> points{{Vec3(0, 0, 0), true, {}, {}}, {Vec3(10, 0, 0), false, {}, {}}};
   const auto d = programmed_point_deviation(points, {arc(Vec3(5, 0, 0), 5.0, kPi, 0.0)});
   EXPECT_EQ(d.programmed_points, 2u);
   EXPECT_EQ(d.polylines, 1u);
@@ -71,7 +71,7 @@ TEST(ProgrammedPointDeviation, RoundedCornerMissesThePoint) {
   // radius 2 about (8,2): it misses the corner by 2 sqrt(2) - 2 and bulges 2 - sqrt(2) from the
   // polyline at the arc's middle.
   const std::vector<ProgrammedPoint> points{
-      {Vec3(0, 0, 0), true, {}}, {Vec3(10, 0, 0), false, {}}, {Vec3(10, 10, 0), false, {}}};
+      {Vec3(0, 0, 0), true, {}, {}}, {Vec3(10, 0, 0), false, {}, {}}, {Vec3(10, 10, 0), false, {}, {}}};
   const auto d = programmed_point_deviation(
       points, {line(Vec3(0, 0, 0), Vec3(8, 0, 0)), arc(Vec3(8, 2, 0), 2.0, -kPi / 2, 0.0),
                line(Vec3(10, 2, 0), Vec3(10, 10, 0))});
@@ -84,8 +84,8 @@ TEST(ProgrammedPointDeviation, RapidsStartNewPolylines) {
   // Start Z100, rapid to Z5, feed down and along X, rapid over to (50,50,5), feed down. The
   // rapid's path is not judged, and the two runs are separate polylines: the line from (10,0,0)
   // to (50,50,5) is no programmed contour.
-  const std::vector<ProgrammedPoint> points{{Vec3(0, 0, 100), true, {}}, {Vec3(0, 0, 5), true, {}},  {Vec3(0, 0, 0), false, {}},
-                                            {Vec3(10, 0, 0), false, {}}, {Vec3(50, 50, 5), true, {}}, {Vec3(50, 50, 0), false, {}}};
+  const std::vector<ProgrammedPoint> points{{Vec3(0, 0, 100), true, {}, {}}, {Vec3(0, 0, 5), true, {}, {}},  {Vec3(0, 0, 0), false, {}, {}},
+                                            {Vec3(10, 0, 0), false, {}, {}}, {Vec3(50, 50, 5), true, {}, {}}, {Vec3(50, 50, 0), false, {}, {}}};
   const auto d = programmed_point_deviation(
       points, {line(Vec3(0, 0, 100), Vec3(0, 0, 5), true), line(Vec3(0, 0, 5), Vec3(0, 0, 0)),
                line(Vec3(0, 0, 0), Vec3(10, 0, 0)), line(Vec3(10, 0, 0), Vec3(50, 50, 5), true),
@@ -134,6 +134,18 @@ TEST_F(ProgrammedPointProgram, InterpolatingSplinePassesItsKnotsAndBulgesBetween
   const auto [s, d] = run(std::string("G0 X0 Y0 Z0\nG1 X0 F1000\nASPLINE\n") + kZigzag);
   EXPECT_LT(d.points_to_path.max_mm, 1e-6);  // A spline passes through every knot
   EXPECT_GT(d.path_to_polyline.max_mm, 0.05);  // and leaves the zigzag between them
+}
+
+TEST_F(ProgrammedPointProgram, ArcsAreMeasuredAlongTheirCircleNotTheirChord) {
+  // A quarter circle r = 10 and a full circle: the path is the programmed contour itself, so
+  // both figures are 0 (up to the sampling: the contour's points are the arc's samples at 0.01 mm,
+  // their chords 0.01^2 / (8 r) = 1.25e-6 mm inside the circle). Against the chords it was
+  // the sagitta 10 (1 - cos 45 deg) = 2.93 mm and the diameter 20 mm (a full circle's chord is a point).
+  const auto [s, d] =
+      run("G0 X10 Y0 Z0\nG1 X10 F1000\nG3 X0 Y10 CR=10\nG1 X-5\nG2 X-5 Y10 I0 J-10\nG1 Y20\nM30\n");
+  EXPECT_EQ(d.programmed_points, 5u);  // the arcs' points densify the contour, they are not counted
+  EXPECT_LT(d.path_to_polyline.max_mm, 1e-5);
+  EXPECT_LT(d.points_to_path.max_mm, 1e-9);
 }
 
 TEST_F(ProgrammedPointProgram, BSplineMissesItsControlPoints) {
