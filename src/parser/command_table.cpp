@@ -389,6 +389,22 @@ bool g_group_of_code(int code, int& group, int& index) {
   return false;
 }
 
+bool g_group_of_name(std::string_view name, int& group, int& index) {
+  if (name.size() > 1 && name[0] == 'G' && all_digits(name.substr(1))) {
+    int code = 0;
+    for (const char c : name.substr(1)) code = code * 10 + (c - '0');
+    return name.size() <= 5 && g_group_of_code(code, group, index);
+  }
+  for (const auto& g : kNamedGGroups)
+    for (size_t i = 0; i < g.names.size() && !g.names[i].empty(); ++i)
+      if (g.names[i] == name) {
+        group = g.group;
+        index = static_cast<int>(i) + 1;
+        return true;
+      }
+  return false;
+}
+
 bool is_axis_indexed_command(std::string_view name) {
   return name == "DIAMONA" || name == "DIAMOFA" || name == "DIAM90A" || name == "DIACYCOFA" ||
          name == "DIAMCHANA" || name == "SCC" || name == "FOCON" || name == "FOCOF";

@@ -39,6 +39,8 @@ int g_code_of_group(int group, int index);
 std::string_view named_code_of_group(int group, int index);
 // The group and internal number of a G code, or false.
 bool g_group_of_code(int code, int& group, int& index);
+// The same for a G function written as text: "G17", "G500", or a named member ("SOFT", "COMPCAD").
+bool g_group_of_name(std::string_view upper_name, int& group, int& index);
 // Commands written with an axis index and no value (PGA Fundamentals, diameter programming
 // and G96): DIAMONA[X], DIAMOFA[X], DIAM90A[X], DIACYCOFA[X], DIAMCHANA[X], SCC[X].
 bool is_axis_indexed_command(std::string_view upper_name);
