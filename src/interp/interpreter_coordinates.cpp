@@ -17,14 +17,14 @@ using namespace detail;
 
 Vector3d Interpreter::tool_length_vector() const {
   // The three lengths on the plane's axes by tool type (Function Manual W1, "Tool length
-  // compensation"; docs/controller-state.md): a turning tool (type 5xx) has length 1 along the
-  // ordinate, length 2 along the abscissa and length 3 along the normal (G18: X, Z, Y); every
-  // other tool (milling, drilling) length 1 along the normal, length 2 along the ordinate and
-  // length 3 along the abscissa (G17: Z, Y, X).
+  // compensation"; docs/controller-state.md): a turning or grinding tool (types 400 to 599) has
+  // length 1 along the ordinate, length 2 along the abscissa and length 3 along the normal (G18:
+  // X, Z, Y); every other tool (milling, drilling) length 1 along the normal, length 2 along the
+  // ordinate and length 3 along the abscissa (G17: Z, Y, X).
   const ToolOffsets& o = tools_.offsets();
   const PlaneIndices plane = state_.plane_indices();
   Vector3d length = Vector3d::Zero();
-  if (o.type >= 500 && o.type <= 599) {
+  if (o.type >= 400 && o.type <= 599) {
     length[plane.second] = o.length_mm;
     length[plane.first] = o.length2_mm;
     length[plane.normal] = o.length3_mm;
