@@ -37,6 +37,15 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
       continue;
     }
     if (write_frame_variable(block, w)) continue;
+    // SD42940/SD42950 assign the tool lengths to other axes than the plane's (a turning tool
+    // under G17 on a mill-turn): not modelled, so a value other than 0 is said once.
+    if ((w.name == "$SC_TOOL_LENGTH_CONST" || w.name == "$SC_TOOL_LENGTH_TYPE") && w.value.is_number() &&
+        w.value.number != 0 && warned_.insert(w.name).second) {
+      diagnostics_.warn(kNotModelled,
+                        w.name + " written: drycut keeps the lengths on the plane's axes by tool type (SD42940/SD42950 not modelled)",
+                        where, block.text);
+      continue;
+    }
     // Any other frame ($P_BFRAME, $P_UBFR, $P_CHBFR[n], $P_SETFRAME ...: drycut has no basic or
     // system frames) or form (a component of $P_PFRAME): said once per name.
     if (!parser::is_frame_variable_name(w.name) || !warned_.insert(w.name).second) continue;
