@@ -32,12 +32,34 @@ ProgramLoader::ProgramLoader(LoaderOptions options, Diagnostics& diagnostics)
 
 ProgramLoader::~ProgramLoader() = default;
 
+// A file may begin with blank, comment or tape-leader lines before its own header
+// (%_N_NAME_MPF): then that header starts the program rather than ending it as the next program
+// of an archive would (punched-tape format: the header belongs in the first line, but editors
+// and DNC software put lines before it). Leaves the reader at the program's start.
+void ProgramLoader::start_at_own_header(Frame& f) {
+  const LinePosition begin = f.reader.tell();
+  RawLine raw;
+  std::string text;
+  while (f.reader.next(raw)) {
+    if (is_program_header(raw.bytes)) {
+      f.start = raw.position;
+      f.reader.seek(raw.position);
+      return;
+    }
+    if (raw.too_long) break;
+    decode_line_to_utf8(raw.bytes, text);
+    if (!is_blank_or_comment(text)) break;
+  }
+  f.reader.seek(begin);
+}
+
 void ProgramLoader::open_main(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw UsageError("cannot read program '" + path.string() + "': no such file");
   auto frame = std::make_unique<Frame>();
   if (!frame->reader.open(path)) throw UsageError("cannot open program '" + path.string() + "'");
+  start_at_own_header(*frame);
   frame->file = std::make_shared<const std::string>(path.string());
   frame->program = normalize_program_name(path.stem().string() + path.extension().string()).name;
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
@@ -312,6 +334,7 @@ void ProgramLoader::call_program(const std::string& written_name, uint64_t passe
   }
   auto frame = std::make_unique<Frame>();
   if (!frame->reader.open(*path)) raise(990005, path->string(), column);
+  start_at_own_header(*frame);
   frame->file = std::make_shared<const std::string>(path->string());
   push_called_frame(std::move(frame), name.name, passes);
 }

@@ -145,6 +145,8 @@ class ProgramLoader {
   // `from_definition_file`: a name drycut's own definition files defined is defined anew (the
   // machine's own GUD files, read after drycut's, win), not alarm 12170.
   void execute_def(bool from_definition_file = false);
+  // Blank, comment or tape-leader lines before the file's own header: the program starts there.
+  static void start_at_own_header(Frame& f);
   void execute_proc();
   Variable make_variable(const DefEntry& d);
   void initialise(Variable& v, const DefEntry& d);
