@@ -161,8 +161,9 @@ void CutterCompensation::count_dummy(const PathElement& element) {
 void CutterCompensation::select(PathElement approach) {
   plane_axis_ = approach.compensation.plane_normal_axis;
   plane_ = compensation_plane(approach.compensation);
-  if (approach.compensation.radius_mm < 0.0)
-    raise(10751, "negative tool radius", approach.source);
+  // A negative compensation value (radius + wear + OFFN below 0: CAM "wear" compensation with
+  // radius 0 and a negative wear) is valid: the equidistant lies on the other side, as the
+  // signed offset gives it (docs/controller-state.md "Negative compensation value").
   tool_position_ = approach.curve->start();  // the approach starts wherever the tool is
   approach_ = std::move(approach);
   phase_ = Phase::Approaching;
