@@ -150,16 +150,18 @@ TEST(Frames, RplTurnsAboutTheNormalOfTheActivePlane) {
 }
 
 TEST(Frames, MirrorReversesCirclesAndCompensationSide) {
-  // MIRROR X0: G0 X10 Y0 -> (-10, 0). G2 to (0, -10) about the workpiece zero is clockwise in
-  // the program; on the machine it runs from (-10, 0) to (0, -10) through (-7.07, -7.07), i.e.
-  // counter-clockwise (G3). G41 acts on the machine as G42. The test tool is 50 long: the
-  // carrier (what the elements give) stands at Z50 above the tip at Z0. (G41 is selected in a
-  // straight block: in the circle block itself it would be alarm 10753.)
-  auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG0 X10 Y0\nG41 G1 Z0 F100\nG2 X0 Y-10 I-10 J0\nM30\n");
+  // MIRROR X0: G0 X12 Y0 -> (-12, 0), the G41 approach X10 Y0 -> (-10, 0). G2 to (0, -10) about
+  // the workpiece zero is clockwise in the program; on the machine it runs from (-10, 0) to
+  // (0, -10) through (-7.07, -7.07), i.e. counter-clockwise (G3). G41 acts on the machine as
+  // G42. The test tool is 50 long: the carrier (what the elements give) stands at Z50 above the
+  // tip at Z0. (G41 is selected in a straight block that moves in the plane: in the circle block,
+  // or with the circle as the first block moving in the plane, it would be alarm 10753.)
+  auto r = run_program("T1 M6 D1\nG0 X0 Y0 Z0\nMIRROR X0\nG0 X12 Y0\nG41 G1 X10 Y0 F100\nG2 X0 Y-10 I-10 J0\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   auto m = r->sink.motions();
-  ASSERT_EQ(m.size(), 4u);  // G0, G0, the G41 block (no move), the circle
-  EXPECT_TRUE(near(m[1].curve->end(), Vector3d(-10, 0, 50)));
+  ASSERT_EQ(m.size(), 4u);  // G0, G0, the G41 approach, the circle
+  EXPECT_TRUE(near(m[1].curve->end(), Vector3d(-12, 0, 50)));
+  EXPECT_TRUE(near(m[2].curve->end(), Vector3d(-10, 0, 50)));
   const double h = 10 / std::sqrt(2.0);
   EXPECT_TRUE(near(m[3].curve->at(m[3].curve->length() / 2).position, Vector3d(-h, -h, 50)));
   EXPECT_TRUE(near(m[3].curve->end(), Vector3d(0, -10, 50)));
