@@ -168,6 +168,43 @@ int InterpreterStateView::settable_frame_number(const std::string& work_offset) 
   return 0;  // G500 (and G53/G153, which suppress without selecting)
 }
 
+// The active tool and the tool table: $P_TOOL (edge), $P_TOOLR, $P_TOOLL[1..3], $P_TOOLNO,
+// $P_TOOLP, $P_AD[n], $TC_DPNT, $TC_DPn and $TC_GETT.
+std::optional<Value> InterpreterStateView::tool_variable(std::string_view n, std::span<const Value> indices) const {
+  auto number = [](std::optional<double> v) { return v ? std::optional<Value>(Value(*v)) : std::nullopt; };
+  const ToolState& tools = interpreter_.tools();
+  if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
+  if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
+  if (n == "$P_TOOLL") {
+    // $P_TOOLL[1..3]: the active edge's lengths 1, 2, 3 (geometry + wear + base); no index: length 1.
+    const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 1.0;
+    const ToolOffsets& o = tools.offsets();
+    return Value(k == 1 ? o.length_mm : k == 2 ? o.length2_mm : k == 3 ? o.length3_mm : 0.0);
+  }
+  if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
+  if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
+  if (n == "$P_AD" && indices.size() == 1 && indices[0].is_number()) {
+    // $P_AD[n]: parameter n of the active cutting edge, as $TC_DPn[active tool, active D] (the
+    // ones tool_datum keeps; the others read 0 here). No edge active: 0.
+    if (!tools.has_tool() || tools.edge() <= 0) return Value(0.0);
+    const Value edge_indices[2] = {Value(tool_number(tools, tools.active_tool())), Value(static_cast<double>(tools.edge()))};
+    const double k = indices[0].number;
+    return number(tool_datum(k >= 1 && k <= 25 ? static_cast<int>(k) : 0, edge_indices));
+  }
+  if (n == "$TC_DPNT") return number(tool_datum(kTeeth, indices));
+  if (n.size() > 6 && n.substr(0, 6) == "$TC_DP" && std::isdigit(static_cast<unsigned char>(n[6]))) {
+    // The parameters drycut keeps: DP1..6, DP12..15, DP21..23 (the others as any unknown datum).
+    int k = 0;
+    for (char c : n.substr(6)) k = std::isdigit(static_cast<unsigned char>(c)) && k < 100 ? k * 10 + (c - '0') : 1000;
+    if ((k >= 1 && k <= 6) || (k >= 12 && k <= 15) || (k >= 21 && k <= 23)) return number(tool_datum(k, indices));
+  }
+  if (n == "$TC_GETT" && indices.size() == 1) {
+    if (const machine::Tool* t = tools.find(indices[0].text)) return Value(static_cast<double>(t->number));
+    return Value(-1.0);
+  }
+  return std::nullopt;
+}
+
 std::optional<Value> InterpreterStateView::read_system_variable(std::string_view n, std::span<const Value> indices) const {
   const ModalState& s = interpreter_.state();
   auto number = [](std::optional<double> v) { return v ? std::optional<Value>(Value(*v)) : std::nullopt; };
@@ -193,38 +230,9 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
       return number(contour.value(static_cast<size_t>(i), static_cast<int>(k), s.plane_indices()));
   }
   if (n == "$P_S" || n == "$AA_S") return spindle_speed(n == "$AA_S", indices);
-  const ToolState& tools = interpreter_.tools();
-  if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
-  if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
-  if (n == "$P_TOOLL") {
-    // $P_TOOLL[1..3]: the active edge's lengths 1, 2, 3 (geometry + wear + base); no index: length 1.
-    const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 1.0;
-    const ToolOffsets& o = tools.offsets();
-    return Value(k == 1 ? o.length_mm : k == 2 ? o.length2_mm : k == 3 ? o.length3_mm : 0.0);
-  }
-  if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
-  if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));
   // The master spindle's number (MD20090, SETMS(n)).
   if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));
-  if (n == "$P_AD" && indices.size() == 1 && indices[0].is_number()) {
-    // $P_AD[n]: parameter n of the active cutting edge, as $TC_DPn[active tool, active D] (the
-    // ones tool_datum keeps; the others read 0 here). No edge active: 0.
-    if (!tools.has_tool() || tools.edge() <= 0) return Value(0.0);
-    const Value edge_indices[2] = {Value(tool_number(tools, tools.active_tool())), Value(static_cast<double>(tools.edge()))};
-    const double k = indices[0].number;
-    return number(tool_datum(k >= 1 && k <= 25 ? static_cast<int>(k) : 0, edge_indices));
-  }
-  if (n == "$TC_DPNT") return number(tool_datum(kTeeth, indices));
-  if (n.size() > 6 && n.substr(0, 6) == "$TC_DP" && std::isdigit(static_cast<unsigned char>(n[6]))) {
-    // The parameters drycut keeps: DP1..6, DP12..15, DP21..23 (the others as any unknown datum).
-    int k = 0;
-    for (char c : n.substr(6)) k = std::isdigit(static_cast<unsigned char>(c)) && k < 100 ? k * 10 + (c - '0') : 1000;
-    if ((k >= 1 && k <= 6) || (k >= 12 && k <= 15) || (k >= 21 && k <= 23)) return number(tool_datum(k, indices));
-  }
-  if (n == "$TC_GETT" && indices.size() == 1) {
-    if (const machine::Tool* t = tools.find(indices[0].text)) return Value(static_cast<double>(t->number));
-    return Value(-1.0);
-  }
+  if (auto v = tool_variable(n, indices)) return v;
   if (n == "$AC_TIME" || n == "$AC_PATHN") return Value(0.0);
   if (auto v = tool_presence(n, indices)) return v;
   // The geometry axes of the plane (Job Planning, "$P_AXN1..3"): abscissa, ordinate, applicate.

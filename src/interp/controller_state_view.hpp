@@ -27,6 +27,7 @@ class InterpreterStateView : public parser::ControllerStateView {
 
  private:
   std::optional<double> g_group_index(int group) const;
+  std::optional<parser::Value> tool_variable(std::string_view name, std::span<const parser::Value> indices) const;
   std::optional<parser::Value> tool_presence(std::string_view name, std::span<const parser::Value> indices) const;
   // $P_PFRAME, $P_UIFR[n], $P_IFRAME, $P_ACTFRAME ... whole or [axis, component] (frame_variable_reads.cpp).
   std::optional<parser::Value> frame_variable(std::string_view name, std::span<const parser::Value> indices) const;

@@ -344,41 +344,43 @@ void LineParser::parse_section_labels(std::string_view& start, std::string_view&
   expect_end();
 }
 
-// EXTCALL, PCALL, CALL BLOCK and CALL: true when a call statement was parsed, false when the
-// words go on as an ordinary subprogram call (PCALL), nullopt when `w` starts no call.
-std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) {
-  // EXTCALL runs a program from an external memory (Function Manual K1, "Executing from external
-  // source": EXTCALL("<path/><name>")); drycut's folders are that memory, so it is a CALL. The
-  // form without parentheses that shop programs use is taken too.
-  if (w == "EXTCALL") {
-    out.statement = Statement::Call;
-    ++pos_;
-    const bool paren = peek().kind == TokenKind::LParen;
-    const size_t k = paren ? 1 : 0;
-    const bool plain_name = (peek(k).kind == TokenKind::String || peek(k).kind == TokenKind::Name) &&
-                            (paren ? peek(k + 1).kind == TokenKind::RParen
-                                   : peek(k + 1).kind != TokenKind::Concat && peek(k + 1).kind != TokenKind::LBracket);
-    if (!plain_name) {
-      // A computed name, EXTCALL ("PAL" << R1) or EXTCALL NAMES[2]: a STRING expression (the
-      // argument's type is STRING), evaluated when the line runs, as CALL's.
-      out.target.column = peek().column;
-      out.target.expr = expression(out);
-      expect_end();
-      return true;
-    }
-    if (paren) ++pos_;
-    if (peek().kind != TokenKind::String && peek().kind != TokenKind::Name)
-      throw LineError(12080, peek().column, "program name expected after EXTCALL");
-    out.call_name = peek().text;
+// EXTCALL runs a program from an external memory (Function Manual K1, "Executing from external
+// source": EXTCALL("<path/><name>")); drycut's folders are that memory, so it is a CALL. The
+// form without parentheses that shop programs use is taken too.
+bool LineParser::parse_extcall(ParsedLine& out) {
+  out.statement = Statement::Call;
+  ++pos_;
+  const bool paren = peek().kind == TokenKind::LParen;
+  const size_t k = paren ? 1 : 0;
+  const bool plain_name = (peek(k).kind == TokenKind::String || peek(k).kind == TokenKind::Name) &&
+                          (paren ? peek(k + 1).kind == TokenKind::RParen
+                                 : peek(k + 1).kind != TokenKind::Concat && peek(k + 1).kind != TokenKind::LBracket);
+  if (!plain_name) {
+    // A computed name, EXTCALL ("PAL" << R1) or EXTCALL NAMES[2]: a STRING expression (the
+    // argument's type is STRING), evaluated when the line runs, as CALL's.
     out.target.column = peek().column;
-    ++pos_;
-    if (paren) {
-      if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "')' expected after the EXTCALL name");
-      ++pos_;
-    }
+    out.target.expr = expression(out);
     expect_end();
     return true;
   }
+  if (paren) ++pos_;
+  if (peek().kind != TokenKind::String && peek().kind != TokenKind::Name)
+    throw LineError(12080, peek().column, "program name expected after EXTCALL");
+  out.call_name = peek().text;
+  out.target.column = peek().column;
+  ++pos_;
+  if (paren) {
+    if (peek().kind != TokenKind::RParen) throw LineError(12080, peek().column, "')' expected after the EXTCALL name");
+    ++pos_;
+  }
+  expect_end();
+  return true;
+}
+
+// EXTCALL, PCALL, CALL BLOCK and CALL: true when a call statement was parsed, false when the
+// words go on as an ordinary subprogram call (PCALL), nullopt when `w` starts no call.
+std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) {
+  if (w == "EXTCALL") return parse_extcall(out);
   // PCALL <path/>NAME(args): a subprogram call with an absolute path (Job Planning, "Subprogram
   // call with path specification and parameters (PCALL)"). The path names the control's
   // directory, which drycut's folders stand for: the words go on from NAME as an ordinary call.

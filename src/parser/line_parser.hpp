@@ -30,6 +30,7 @@ class LineParser {
   bool parse_define(ParsedLine& out);
   bool parse_loop_condition(ParsedLine& out, Statement s);  // WHILE cond, UNTIL cond
   bool parse_for(ParsedLine& out);
+  bool parse_extcall(ParsedLine& out);
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
   void parse_section_labels(std::string_view& start, std::string_view& end);
   void parse_redef(ParsedLine& out);
