@@ -112,6 +112,7 @@ class Interpreter {
 
   void apply_system_writes(const parser::Block& block);  // system_variable_writes.cpp
   // $P_UIFR[n] = frame / $P_UIFR[n, axis, component] = value, $P_PFRAME = frame; false: not one.
+  bool write_programmable_component(const parser::SystemWrite& w, size_t first);  // $P_PFRAME[ax, comp]=
   bool write_frame_variable(const parser::Block& block, const parser::SystemWrite& write);
   void apply_modal_save(parser::ModalSave what);         // PROC ... SAVE
   void apply_g_words(BlockContext& ctx);

@@ -48,7 +48,7 @@ void Interpreter::add_nominal_time(const PathElement& e) {
   if (!e.rapid) {
     if (e.feed_mm_s <= 0) return;
     nominal_time_s_ += length / e.feed_mm_s;
-    if (tools_.active_tool()) cutting_time_s_ += length / e.feed_mm_s;  // a tool active: cutting
+    if (tools_.has_tool()) cutting_time_s_ += length / e.feed_mm_s;  // a tool active (not T0): cutting
     return;
   }
   // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest):

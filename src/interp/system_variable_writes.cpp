@@ -74,12 +74,7 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
                                         : FrameComponents{};
   if (w.indices.size() == first + 2) {  // [.., axis, component] = value
     if (!w.value.is_number()) return false;
-    if (!settable && !active) {
-      // The programmable frame is kept as a matrix: its components are taken from it.
-      const std::optional<FrameComponents> now = components_of(state_.frames.programmable());
-      if (!now) return false;
-      components = *now;
-    }
+    if (!settable && !active) return write_programmable_component(w, first);
     const int axis = detail::axis_index(w.indices[first].text);
     const std::string& component = w.indices[first + 1].text;
     const bool length = component == "TR" || component == "FI";
@@ -106,6 +101,30 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
   } else {
     set_programmable_frame(frame);
   }
+  return true;
+}
+
+bool Interpreter::write_programmable_component(const parser::SystemWrite& w, size_t first) {
+  // The programmable frame is kept as a matrix, not as the components TRANS, ROT, SCALE and
+  // MIRROR built: TR (the outermost offset) can always be written; RT, SC and MI only while the
+  // frame is a pure translation (a mirror and a rotation cannot be told apart from the matrix,
+  // MIRROR X0 Y0 is a half turn); FI is not kept for it. Anything else: false (warned).
+  const int axis = detail::axis_index(w.indices[first].text);
+  const std::string& component = w.indices[first + 1].text;
+  const Frame& now = state_.frames.programmable();
+  if (axis < 0) return false;
+  if (component == "TR") {
+    Eigen::Vector3d offset = now.offset();
+    offset[axis] = w.value.number * geometry_unit();
+    set_programmable_frame(Frame::affine(now.linear(), offset));
+    return true;
+  }
+  if (component == "FI" || !now.is_pure_translation()) return false;
+  std::optional<FrameComponents> components = components_of(now);
+  if (!components || !components->set(axis, component, w.value.number)) return false;
+  const Frame frame = components->frame();
+  if (!frame.invertible()) return false;
+  set_programmable_frame(frame);
   return true;
 }
 

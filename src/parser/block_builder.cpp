@@ -176,6 +176,8 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     if (Variable* v = l_.find_variable(item.name)) {
+      // A list of values (POSP[2]=(1,2) to a user array named like a list command) is no value.
+      if (item.expr == kNoExpr) throw LineError(12080, item.column, "a value expected, not a list");
       l_.assign_variable(*v, item.index_first, item.index_count, item.expr, item.column);
       return;
     }

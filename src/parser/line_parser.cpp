@@ -452,7 +452,9 @@ void LineParser::parse_list_assignment(ParsedLine& out, Item& item) {
     item.index_first = first;
   }
   item.kind = ItemKind::Assign;
-  if (!polynomial && peek().kind == TokenKind::Assign && peek(1).kind != TokenKind::LParen) {
+  // A single value, also in parentheses ("MEASA[X]=(R1+1)*2", or a user array of the same name,
+  // "POSP[2]=(3)"), is an expression; a parenthesised group with a comma at its top is the list.
+  if (!polynomial && peek().kind == TokenKind::Assign && !(peek(1).kind == TokenKind::LParen && group_has_comma(pos_ + 1))) {
     ++pos_;
     item.expr = expression(out);
     return;
@@ -462,6 +464,20 @@ void LineParser::parse_list_assignment(ParsedLine& out, Item& item) {
   pos_ += 2;
   std::array<ExprIndex, 8> values{};
   parse_item_arguments(out, item, values, false, "too many values in the list");
+}
+
+bool LineParser::group_has_comma(size_t open) const {
+  int depth = 0;
+  for (size_t k = open; k < tokens_.size(); ++k) {
+    const TokenKind kind = tokens_[k].kind;
+    if (kind == TokenKind::End) return false;
+    if (kind == TokenKind::LParen || kind == TokenKind::LBracket) ++depth;
+    if (kind == TokenKind::RParen || kind == TokenKind::RBracket) {
+      if (--depth == 0) return false;
+    }
+    if (kind == TokenKind::Comma && depth == 1) return true;
+  }
+  return false;
 }
 
 void LineParser::parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,

@@ -46,6 +46,8 @@ class LineParser {
   void parse_letter_number_word(ParsedLine& out, Item& item, const Token& t);
   void parse_list_assignment(ParsedLine& out, Item& item);  // PO[X]=(..), PO[]=(..), MEASA[X]=(..)
   // The values up to ')' (after '(') into the pool's argument list as item.arg_first/arg_count.
+  // Whether the parenthesised group opening at token `open` has a comma at its own level.
+  bool group_has_comma(size_t open) const;
   void parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,
                             const char* too_many);
   void parse_jump_target(ParsedLine& out);

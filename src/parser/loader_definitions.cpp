@@ -18,18 +18,19 @@ bool is_name_char(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '$';
 }
 
-// DEFINE name AS text, after an optional block number (macros cannot nest: Job Planning,
-// "Macro technique").
-bool is_define_line(std::string_view line) {
+// DEFINE name AS text, after an optional block number: where the name starts (npos for any
+// other line). The name is taken as written, the text may use earlier macros.
+size_t defined_name_start(std::string_view line) {
   size_t i = line.find_first_not_of(" \t");
   if (i != std::string_view::npos && (line[i] == 'N' || line[i] == 'n')) {
     const size_t digits = line.find_first_not_of("0123456789", i + 1);
     if (digits != i + 1) i = line.find_first_not_of(" \t", digits);
   }
-  if (i == std::string_view::npos || line.size() - i < 7) return false;
+  if (i == std::string_view::npos || line.size() - i < 7) return std::string_view::npos;
   for (size_t k = 0; k < 6; ++k)
-    if ((line[i + k] & ~0x20) != "DEFINE"[k]) return false;
-  return !is_name_char(line[i + 6]);
+    if ((line[i + k] & ~0x20) != "DEFINE"[k]) return std::string_view::npos;
+  if (is_name_char(line[i + 6])) return std::string_view::npos;
+  return line.find_first_not_of(" \t", i + 6);
 }
 
 }  // namespace
@@ -225,9 +226,10 @@ bool ProgramLoader::may_hold_macro() const {
 
 void ProgramLoader::expand_macros() {
   // Whole names outside strings and comments are replaced by their macro text (once: a macro's
-  // text is not expanded again, so a macro cannot recurse). A DEFINE line is taken as written:
-  // a machine's own macro file defines names drycut's CYCLE_MACROS.DEF defined before it.
-  if (is_define_line(text_)) return;
+  // text is not expanded again, so a macro cannot recurse). The name a DEFINE line defines is
+  // taken as written: a machine's own macro file defines names drycut's CYCLE_MACROS.DEF defined
+  // before it; its text may use earlier macros (expanded once, here).
+  const size_t defined_name = defined_name_start(text_);
   std::string out;
   out.reserve(text_.size() + 16);
   bool changed = false;
@@ -247,7 +249,8 @@ void ProgramLoader::expand_macros() {
       while (j < text_.size() && is_name_char(text_[j])) ++j;
       std::string word = text_.substr(i, j - i);
       for (char& w : word) w = static_cast<char>(w >= 'a' && w <= 'z' ? w - 'a' + 'A' : w);
-      if (auto it = macros_.find(word); it != macros_.end()) {
+      auto it = i == defined_name ? macros_.end() : macros_.find(word);
+      if (it != macros_.end()) {
         // The expanded block obeys the block length limit too: a long macro used many times in
         // one line would otherwise grow it to gigabytes.
         if (out.size() + it->second.size() > LineReader::kMaxLineLength)

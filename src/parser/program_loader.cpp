@@ -41,13 +41,15 @@ void ProgramLoader::start_at_own_header(Frame& f) {
   RawLine raw;
   std::string text;
   while (f.reader.next(raw)) {
-    if (is_program_header(raw.bytes)) {
+    std::string_view bytes = raw.bytes;
+    if (raw.position.offset == 0 && bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);  // a UTF-8 BOM
+    if (is_program_header(bytes)) {
       f.start = raw.position;
       f.reader.seek(raw.position);
       return;
     }
     if (raw.too_long) break;
-    decode_line_to_utf8(raw.bytes, text);
+    decode_line_to_utf8(bytes, text);
     if (!is_blank_or_comment(text)) break;
   }
   f.reader.seek(begin);

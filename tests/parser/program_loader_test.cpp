@@ -293,6 +293,12 @@ TEST_F(Loader, MachineDefinitionFilesDefineDrycutsStandardNamesAgain) {
   EXPECT_EQ(xs(run("X=_TSB\nM30\n", options)), (std::vector<double>{3}));
 }
 
+TEST_F(Loader, HeaderAfterABomAndCommentLinesStartsTheProgram) {
+  // Notepad-style editors write a UTF-8 BOM; DNC software adds a comment line before the header.
+  EXPECT_EQ(xs(run("\xEF\xBB\xBF; part 4711\n\n%_N_MAIN_MPF\n;$PATH=/_N_MPF_DIR\nG1 X1 F100\nX2\nM30\n")),
+            (std::vector<double>{1, 2}));
+}
+
 TEST_F(Loader, MissingMainIsUsageError) {
   ProgramLoader l({}, diagnostics_);
   EXPECT_THROW(l.open_main(dir_ / "NOPE.MPF"), UsageError);
