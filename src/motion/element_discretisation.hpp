@@ -53,8 +53,8 @@
 //    most at w and could not rise faster than that ramp, so capping the piece at w costs about
 //    that fraction of its time at most. Spline spans whose jerk bound dips steeply (BSPLINE
 //    spans over short control legs: v = cbrt(j_i / |d3P_i/ds3|) falls by 10 % within 0.02 mm)
-//    were otherwise halved down to min_piece_mm on both flanks of each dip (~60 stations per
-//    such span); the pieces at the dip's bottom are still halved as before.
+//    were otherwise halved down to min_piece_mm on both flanks of each dip (~66 samples and
+//    ~33 pieces per such span); the pieces at the dip's bottom are still halved as before.
 // These pieces are timed along the envelope like arcs. The former equal segments' times depended
 // on h (up to 0.7 % from a 0.005 mm reference under BRISK on long, tightly curved spans): the
 // sampled pieces are within 0.1 % of that reference under BRISK and of the h segments under
