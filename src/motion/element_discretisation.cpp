@@ -9,6 +9,7 @@
 #include <typeinfo>
 
 #include "interp/geometry/arc_curve.hpp"
+#include "motion/velocity_ramp.hpp"
 
 namespace drycut::motion {
 namespace {
@@ -83,10 +84,12 @@ double accel_tolerance(const DiscretisationRule& rule, const Station& a, const S
   return at_limit > 0 ? rule.ramp_tolerance * v / at_limit : std::numeric_limits<double>::infinity();
 }
 
-// Step 2 of the rule: the piece [a, b] with worst case w keeps its limits within tolerance.
+// Step 2 of the rule: the piece [a, b] with worst case w keeps its limits within tolerance
+// (the velocity bound: unless `bound_checked`, which step 6 of sampled pieces has shown).
 bool piece_acceptable(const DiscretisationRule& rule, double length, const Station& a, const Station& b,
-                      const Station& w) {
-  if (!close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance)) return false;
+                      const Station& w, bool bound_checked = false) {
+  if (!bound_checked && !close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance))
+    return false;
   if (!ramp_matters(length, a, b)) return true;
   if (!close_to(w.ramp.jerk, a.ramp.jerk, b.ramp.jerk, rule.ramp_tolerance)) return false;
   const double tolerance = accel_tolerance(rule, a, b);
@@ -226,20 +229,44 @@ struct SampledRefiner {
     return w;
   }
 
-  void refine(const Station& a, Station b, int depth) {
+  // Step 6: the bound varies monotonely over the samples, their lowest is no sampled local
+  // minimum (the sample beyond the piece's lower end, beyond_a or beyond_b, is lower still: a
+  // minimum between samples would hide next to a sampled one), and a ramp from the worst of
+  // them (the ends' better ramp limits; an upper bound of its reach) gains at most
+  // sampled_reach_tolerance over the piece: the planner could not follow the variation.
+  bool ramp_bound(const Station& a, const Station& m, const Station& b, const Station& w, double beyond_a,
+                  double beyond_b) const {
+    const double va = a.bound.velocity, vm = m.bound.velocity, vb = b.bound.velocity, v = w.bound.velocity;
+    if (!((va <= vm && vm <= vb) || (va >= vm && vm >= vb)) || !std::isfinite(v) || !(v > 0.0)) return false;
+    if (!(va <= vb ? beyond_a < va : beyond_b < vb)) return false;
+    const RampLimits best{std::max(a.ramp.accel, b.ramp.accel), std::max(a.ramp.jerk, b.ramp.jerk)};
+    return reach_upper_bound(v, b.s - a.s, best) <= v * (1.0 + rule.sampled_reach_tolerance);
+  }
+
+  bool acceptable(const Station& a, const Station& m, const Station& b, const Station& w, double beyond_a,
+                  double beyond_b) const {
+    if (!turns_little(a, m, b)) return false;
+    return piece_acceptable(rule, length, a, b, w) ||
+           (ramp_bound(a, m, b, w, beyond_a, beyond_b) && piece_acceptable(rule, length, a, b, w, true));
+  }
+
+  // beyond_a, beyond_b: the bound of the sample next to a (before it) and to b (after it);
+  // -infinity at the element's ends, which are nodes of their own.
+  void refine(const Station& a, Station b, int depth, double beyond_a, double beyond_b) {
     Station m = station(0.5 * (a.s + b.s));
     const Station w = limits_at(worst_point(a, m, b));
     const int budget = rule.max_segments - static_cast<int>(out.size());
     const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
-    if (!can_split || (turns_little(a, m, b) && piece_acceptable(rule, length, a, b, w))) {
+    if (!can_split || acceptable(a, m, b, w, beyond_a, beyond_b)) {
       b.piece_bound = w.bound;
       b.piece_ramp = w.ramp;
       out.push_back(std::move(b));
       return;
     }
-    refine(a, m, depth + 1);
+    const double va = a.bound.velocity, vb = b.bound.velocity;
+    refine(a, m, depth + 1, beyond_a, vb);
     const Station from = out.back();
-    refine(from, std::move(b), depth + 1);
+    refine(from, std::move(b), depth + 1, va, beyond_b);
   }
 };
 
@@ -266,7 +293,8 @@ bool discretise_element(const geometry::Curve& curve, double length, double fine
     sampled.ramp_tolerance = rule.sampled_ramp_tolerance;
     SampledRefiner refiner{curve, length, sampled, limits_at, out};
     const Station start = out.back();
-    refiner.refine(start, station(length), 0);
+    constexpr double kOpen = -std::numeric_limits<double>::infinity();
+    refiner.refine(start, station(length), 0, kOpen, kOpen);
     return true;
   }
   if (rule.equal_segments || !arc || arc->sweep() == 0.0) {

@@ -44,6 +44,17 @@
 //    extreme between samples exceeds the nearest one by at most 1 - cos(0.025), 0.03 %), and
 //    the worst case passes step 2 with the tighter sampled tolerances (0.2 %, ramps 0.2 %);
 //    otherwise it is halved at m (min_piece_mm, max_segments as above).
+// 6. A piece whose velocity bound varies beyond that tolerance is still accepted when its three
+//    samples are monotone (a <= m <= b or a >= m >= b, so the sampled worst case w is the bound
+//    of its lower end), that end is no local minimum of the samples (the sample beyond it is
+//    lower still; next to a sampled minimum the true one may hide between samples), and the
+//    planner could not use the variation: a ramp from w over the whole piece rises by at most
+//    sampled_reach_tolerance (1e-4) of w. Finer pieces would start their profile at that end at
+//    most at w and could not rise faster than that ramp, so capping the piece at w costs about
+//    that fraction of its time at most. Spline spans whose jerk bound dips steeply (BSPLINE
+//    spans over short control legs: v = cbrt(j_i / |d3P_i/ds3|) falls by 10 % within 0.02 mm)
+//    were otherwise halved down to min_piece_mm on both flanks of each dip (~66 samples and
+//    ~33 pieces per such span); the pieces at the dip's bottom are still halved as before.
 // These pieces are timed along the envelope like arcs. The former equal segments' times depended
 // on h (up to 0.7 % from a 0.005 mm reference under BRISK on long, tightly curved spans): the
 // sampled pieces are within 0.1 % of that reference under BRISK and of the h segments under
@@ -79,6 +90,7 @@ struct DiscretisationRule {
   double max_sampled_turn = 0.05;  // rad, tangent turn between samples of a sampled piece
   double sampled_bound_tolerance = 0.002;  // tolerances of sampled pieces (no closed form)
   double sampled_ramp_tolerance = 0.002;
+  double sampled_reach_tolerance = 1e-4;  // step 6: relative rise of a ramp over a monotone piece
   bool equal_segments = false;  // reference: equal segments of fixed_segment_mm, or of h
   double fixed_segment_mm = 0;
   int max_segments = 20000;

@@ -107,10 +107,21 @@ class NurbsBuilder final : public SplineBuilder {
     Knots u{};  // u_j .. u_{j+2p-1}
     for (size_t i = 0; i < 2 * up; ++i) u[i] = knot(j + i, n, p, clamp_end);
     const double a = u[up - 1], b = u[up];  // span [u_{p+j-1}, u_{p+j}]
+    // Equal positive weights (PW not programmed, or the same PW on every point) cancel in
+    // P = (Σ w N_i P_i) / (Σ w N_i): the span is the polynomial B spline of the points, written
+    // with w == 1 exactly. De Boor's affine steps would leave w = 1 ± a few ulps, and the
+    // rational formulas (the quotient rule in every speed evaluation of the arc-length table
+    // and its inversions) would run on every span.
+    bool equal_weights = node(j - 1).weight > 0.0;
+    for (size_t i = 1; i <= up; ++i) equal_weights = equal_weights && node(j - 1 + i).weight == node(j - 1).weight;
     Controls ctrl;
     for (size_t i = 0; i <= up; ++i) {
       const Node& q = node(j - 1 + i);
-      ctrl[i] << q.weight * q.point, q.weight;
+      if (equal_weights) {
+        ctrl[i] << q.point, 1.0;
+      } else {
+        ctrl[i] << q.weight * q.point, q.weight;
+      }
     }
     Eigen::Matrix4d values;
     for (int k = 0; k < 4; ++k) values.col(k) = de_boor(ctrl, u, up, a + (b - a) * k / 3.0);
@@ -118,6 +129,7 @@ class NurbsBuilder final : public SplineBuilder {
       throw_spline_value_alarm("PW=0 leaves the B spline undefined at block " + std::to_string(j));
     }
     Eigen::Matrix4d coefficients = values * fit_matrix();
+    if (equal_weights) coefficients.row(3) << 1.0, 0.0, 0.0, 0.0;
     // Rounding must not invent a cubic term in a degree-2 span.
     if (p == 2) coefficients.col(3).setZero();
     ready_.push_back({std::make_shared<PolynomialSpan>(coefficients, 1.0), j});

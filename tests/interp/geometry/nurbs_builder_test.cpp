@@ -142,6 +142,40 @@ TEST(NurbsSpline, EqualWeightsEverywhereAreThePlainBSpline) {
   }
 }
 
+TEST(NurbsSpline, EqualWeightsGiveTheSamePolynomialSpanBitForBit) {
+  // Equal weights cancel in the quotient: the builder writes such spans as the polynomial
+  // B spline of the points (w == 1), so PW=3 on every point is the unweighted span exactly, and
+  // both match the Cox-de Boor reference; a span with a differing weight stays rational.
+  const auto pts = polygon();
+  const ReferenceNurbs ref(pts, std::vector<double>(pts.size(), 1.0), {}, 3);
+  auto plain = make_nurbs_builder(3);
+  auto heavy = make_nurbs_builder(3);
+  const auto a = run_spline(*plain, pts);
+  const auto c = run_spline(*heavy, pts, {}, std::vector<double>(pts.size(), 3.0));
+  ASSERT_EQ(a.size(), c.size());
+  for (size_t k = 0; k < a.size(); ++k) {
+    const auto* sa = dynamic_cast<const PolynomialSpan*>(a[k].curve.get());
+    const auto* sc = dynamic_cast<const PolynomialSpan*>(c[k].curve.get());
+    ASSERT_TRUE(sa && sc);
+    const double u0 = ref.knots[3 + k], u1 = ref.knots[4 + k];
+    for (double f : {0.0, 0.25, 0.5, 0.8, 1.0}) {
+      const ParametricDerivatives da = sa->derivatives(f), dc = sc->derivatives(f);
+      EXPECT_EQ(da.p, dc.p);
+      EXPECT_EQ(da.d1, dc.d1);
+      EXPECT_EQ(da.d3, dc.d3);
+      EXPECT_LT((da.p - ref.at(u0 + f * (u1 - u0))).norm(), 1e-10) << k << " " << f;
+    }
+    EXPECT_EQ(sa->length(), sc->length());
+  }
+  // One point weighted differently: the spans it shapes differ from the plain ones.
+  std::vector<double> w(pts.size(), 1.0);
+  w[4] = 2.0;
+  auto weighted = make_nurbs_builder(3);
+  const auto d = run_spline(*weighted, pts, {}, w);
+  EXPECT_GT((d[2].curve->at(0.5 * d[2].curve->length()).position -
+             a[2].curve->at(0.5 * a[2].curve->length()).position).norm(), 1e-3);
+}
+
 TEST(NurbsSpline, DegreeTwoDiffersFromDegreeThree) {
   const auto pts = polygon();
   auto b2 = make_nurbs_builder(2);
