@@ -616,7 +616,7 @@ void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, b
   // the next block that moves in it: that block is the selection block, so a circle there is
   // refused as in the G41 block itself (drycut's reading of the rule; it ran the circle as a
   // straight approach, or a full circle uncompensated, silently).
-  if (compensation_selection_pending_ && !ctx.compensation_changed && moves && curve &&
+  if (compensation_selection_pending_ && !selection_named_plane_axis_ && !ctx.compensation_changed && moves && curve &&
       state_.compensation != CompensationSide::None)
     raise(ctx, 10753, "the first block that moves in the plane after G41/G42 is not G0/G1", 0);
   if (!ctx.compensation_changed || !moves || !curve) return;
@@ -679,6 +679,13 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   const bool full_circle = arc_mode && !has_axis &&
                            (ctx.block.find_address("I") || ctx.block.find_address("J") ||
                             ctx.block.find_address("K") || ctx.block.find_address("AR"));
+  if (ctx.compensation_changed && state_.compensation != CompensationSide::None) {
+    const PlaneIndices plane = state_.plane_indices();
+    selection_named_plane_axis_ = false;
+    for (const AddressWord& a : ctx.block.addresses)
+      if (const int i = axis_index(a.name); i == plane.first || i == plane.second || a.name == "AP" || a.name == "RP")
+        selection_named_plane_axis_ = true;
+  }
   refuse_compensation_change_on_curve(ctx, has_axis || full_circle);
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;
