@@ -127,12 +127,18 @@ TEST(NurbsSpline, StaysInsideTheConvexHullOfAConvexPolygon) {
   }
 }
 
-TEST(NurbsSpline, EqualWeightsEverywhereAreThePlainBSpline) {
-  const auto pts = polygon();
+// The polygon's spans unweighted and with PW=3 on every point.
+std::pair<std::vector<SplineSpan>, std::vector<SplineSpan>> plain_and_equally_weighted(const std::vector<Vec3>& pts) {
   auto plain = make_nurbs_builder(3);
   auto heavy = make_nurbs_builder(3);
-  const auto a = run_spline(*plain, pts);
-  const auto c = run_spline(*heavy, pts, {}, std::vector<double>(pts.size(), 3.0));
+  auto a = run_spline(*plain, pts);
+  auto c = run_spline(*heavy, pts, {}, std::vector<double>(pts.size(), 3.0));
+  return {std::move(a), std::move(c)};
+}
+
+TEST(NurbsSpline, EqualWeightsEverywhereAreThePlainBSpline) {
+  const auto pts = polygon();
+  const auto [a, c] = plain_and_equally_weighted(pts);
   ASSERT_EQ(a.size(), c.size());
   for (size_t k = 0; k < a.size(); ++k) {
     EXPECT_NEAR(a[k].curve->length(), c[k].curve->length(), 1e-12);
@@ -148,10 +154,7 @@ TEST(NurbsSpline, EqualWeightsGiveTheSamePolynomialSpanBitForBit) {
   // both match the Cox-de Boor reference; a span with a differing weight stays rational.
   const auto pts = polygon();
   const ReferenceNurbs ref(pts, std::vector<double>(pts.size(), 1.0), {}, 3);
-  auto plain = make_nurbs_builder(3);
-  auto heavy = make_nurbs_builder(3);
-  const auto a = run_spline(*plain, pts);
-  const auto c = run_spline(*heavy, pts, {}, std::vector<double>(pts.size(), 3.0));
+  const auto [a, c] = plain_and_equally_weighted(pts);
   ASSERT_EQ(a.size(), c.size());
   for (size_t k = 0; k < a.size(); ++k) {
     const auto* sa = dynamic_cast<const PolynomialSpan*>(a[k].curve.get());
