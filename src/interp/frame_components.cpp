@@ -1,9 +1,7 @@
 #include "interp/frame_components.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
-#include <numbers>
 #include <vector>
 
 #include "interp/frame_chain.hpp"
@@ -33,29 +31,6 @@ Frame FrameComponents::frame() const {
       .then(Frame::rotation_rpy(rotation_deg))
       .then(Frame::scale(scale))
       .then(Frame::mirror(mirror));
-}
-
-std::optional<FrameComponents> components_of(const Frame& frame) {
-  FrameComponents c;
-  c.translation = frame.offset();
-  Eigen::Matrix3d r = frame.linear();  // = R·S·M
-  if (r.determinant() < 0) {
-    int k = 0;
-    while (k < 2 && r(k, k) >= 0) ++k;
-    c.mirror[static_cast<size_t>(k)] = true;
-    r.col(k) = -r.col(k);  // R·S·M·M = R·S
-  }
-  for (int i = 0; i < 3; ++i) {
-    c.scale[i] = r.col(i).norm();
-    if (c.scale[i] <= 0) return std::nullopt;
-    r.col(i) /= c.scale[i];
-  }
-  const double deg = 180.0 / std::numbers::pi;
-  c.rotation_deg = Eigen::Vector3d(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
-                                   std::atan2(r(1, 0), r(0, 0))) * deg;
-  const Frame back = c.frame();
-  if (!back.linear().isApprox(frame.linear(), 1e-9)) return std::nullopt;
-  return c;
 }
 
 bool FrameComponents::set(int axis, std::string_view component, double value) {

@@ -49,13 +49,6 @@ struct FrameComponents {
   std::optional<Frame> composed_;
 };
 
-// The components of a frame known only as its matrix (the programmable frame after TRANS, ROT,
-// SCALE, MIRROR and their A-forms): TR its translation, MI the axis of a single mirror (a
-// negative determinant: the first axis whose diagonal element is negative), SC the lengths of
-// the columns, RT the RPY angles (Rz·Ry·Rx, as ROT) of what remains. nullopt when these
-// components do not give the frame back (a shear: a non-uniform scale before a rotation).
-std::optional<FrameComponents> components_of(const Frame& frame);
-
 // The components of settable frame `index` in the machine profile (translation and rotation).
 FrameComponents profile_frame_components(const machine::MachineProfile& profile, int index);
 

@@ -669,9 +669,14 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (execute_axis_instruction(ctx)) return;
   if (const AddressWord* fp = ctx.block.find_address("FP"))
     warn_once(ctx, "FP= without G75 (it selects the fixed point of G75 only)", fp->column);
-  bool has_axis = false;
-  for (const AddressWord& a : ctx.block.addresses)
-    if (axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP") has_axis = true;
+  bool has_axis = false, has_plane_axis = false;  // the latter: an axis of the plane, or a polar word
+  const PlaneIndices plane = state_.plane_indices();
+  for (const AddressWord& a : ctx.block.addresses) {
+    const int i = axis_index(a.name);
+    const bool polar = a.name == "AP" || a.name == "RP";
+    has_axis = has_axis || i >= 0 || polar;
+    has_plane_axis = has_plane_axis || i == plane.first || i == plane.second || polar;
+  }
   if (hold_contour_angle(ctx, has_axis)) return;
   if (held_angle_deg_ && has_axis) run_to_contour_corner(ctx);
   const bool arc_mode = state_.motion == MotionMode::ArcCw || state_.motion == MotionMode::ArcCcw;
@@ -679,13 +684,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   const bool full_circle = arc_mode && !has_axis &&
                            (ctx.block.find_address("I") || ctx.block.find_address("J") ||
                             ctx.block.find_address("K") || ctx.block.find_address("AR"));
-  if (ctx.compensation_changed && state_.compensation != CompensationSide::None) {
-    const PlaneIndices plane = state_.plane_indices();
-    selection_named_plane_axis_ = false;
-    for (const AddressWord& a : ctx.block.addresses)
-      if (const int i = axis_index(a.name); i == plane.first || i == plane.second || a.name == "AP" || a.name == "RP")
-        selection_named_plane_axis_ = true;
-  }
+  if (ctx.compensation_changed && state_.compensation != CompensationSide::None) selection_named_plane_axis_ = has_plane_axis;
   refuse_compensation_change_on_curve(ctx, has_axis || full_circle);
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;

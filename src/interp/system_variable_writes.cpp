@@ -120,9 +120,10 @@ bool Interpreter::write_programmable_component(const parser::SystemWrite& w, siz
     return true;
   }
   if (component == "FI" || !now.is_pure_translation()) return false;
-  std::optional<FrameComponents> components = components_of(now);
-  if (!components || !components->set(axis, component, w.value.number)) return false;
-  const Frame frame = components->frame();
+  FrameComponents components;  // a pure translation: its offset is all there is
+  components.translation = now.offset();
+  if (!components.set(axis, component, w.value.number)) return false;
+  const Frame frame = components.frame();
   if (!frame.invertible()) return false;
   set_programmable_frame(frame);
   return true;
