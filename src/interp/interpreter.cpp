@@ -568,9 +568,11 @@ void Interpreter::emit(PathElement&& element) {
 }
 
 void Interpreter::defer_compensation_selection(PathElement& element) {
-  // W1 "Tool radius compensation": a selection block that moves no axis of the working plane
+  // W1 "Tool radius compensation": a selection block that programs no axis of the working plane
   // (G41 G1 Z-3) selects nothing; the compensation starts with the next block that does, which
-  // becomes the approach. (Under a tilting frame the plane is the tilted one: not deferred.)
+  // becomes the approach. One that names them where the tool stands selects: its approach has
+  // no length and ends beside the next element's start. (Under a tilting frame the plane is the
+  // tilted one: not deferred.)
   if (element.compensation.side == CompensationSide::None || element.compensation.tilted ||
       element.kind != ElementKind::Line) {
     compensation_selection_pending_ = false;
@@ -578,7 +580,7 @@ void Interpreter::defer_compensation_selection(PathElement& element) {
   }
   const PlaneIndices plane = state_.plane_indices();
   const Eigen::Vector3d d = element.curve->end() - element.curve->start();
-  if (std::hypot(d[plane.first], d[plane.second]) > 1e-9) {
+  if (block_names_plane_axis_ || std::hypot(d[plane.first], d[plane.second]) > 1e-9) {
     compensation_selection_pending_ = false;
     return;
   }
@@ -616,7 +618,7 @@ void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, b
   // the next block that moves in it: that block is the selection block, so a circle there is
   // refused as in the G41 block itself (drycut's reading of the rule; it ran the circle as a
   // straight approach, or a full circle uncompensated, silently).
-  if (compensation_selection_pending_ && !selection_named_plane_axis_ && !ctx.compensation_changed && moves && curve &&
+  if (compensation_selection_pending_ && !ctx.compensation_changed && moves && curve &&
       state_.compensation != CompensationSide::None)
     raise(ctx, 10753, "the first block that moves in the plane after G41/G42 is not G0/G1", 0);
   if (!ctx.compensation_changed || !moves || !curve) return;
@@ -666,6 +668,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   if (ctx.compensation_changed && state_.compensation != CompensationSide::None && !tools_.has_tool())
     raise(ctx, 10750, "no tool is active", ctx.compensation_column);
   emit_dynamics_change(ctx);
+  block_names_plane_axis_ = false;
   if (execute_axis_instruction(ctx)) return;
   if (const AddressWord* fp = ctx.block.find_address("FP"))
     warn_once(ctx, "FP= without G75 (it selects the fixed point of G75 only)", fp->column);
@@ -684,7 +687,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   const bool full_circle = arc_mode && !has_axis &&
                            (ctx.block.find_address("I") || ctx.block.find_address("J") ||
                             ctx.block.find_address("K") || ctx.block.find_address("AR"));
-  if (ctx.compensation_changed && state_.compensation != CompensationSide::None) selection_named_plane_axis_ = has_plane_axis;
+  block_names_plane_axis_ = has_plane_axis;
   refuse_compensation_change_on_curve(ctx, has_axis || full_circle);
 
   const bool stops = ctx.dwell || ctx.tool_change || ctx.stop || ctx.preprocessing_stop;

@@ -333,9 +333,9 @@ class Interpreter {
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any
   std::set<std::string> warned_;
   bool compensation_selection_pending_ = false;  // G41/G42 selected, not yet moved in the plane
-  // The selection block named an axis of the plane (G41 G1 X.. Y.. where the tool already is):
-  // W1 selects there, so a circle after it is no selection block (not 10753).
-  bool selection_named_plane_axis_ = false;
+  // The motion block being executed names an axis of the plane (or AP/RP): a selection block
+  // that does (G41 G1 X.. Y.. where the tool already is) selects, by W1's wording, even unmoved.
+  bool block_names_plane_axis_ = false;
   std::string unmodelled_transformation_;  // TRANSMIT ... until TRAFOOF; empty: none
   // The master spindle's last M5: when (the nominal clock) and from which speed it braked.
   struct SpindleBraking {
