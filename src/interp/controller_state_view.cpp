@@ -93,8 +93,15 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
 }
 
 std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<const Value> indices) const {
-  // $P_S[n] / $AA_S[n]: spindle n; without an index (or [0]) the master spindle.
-  const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
+  // $P_S[n] / $AA_S[n]: spindle n; without an index (or [0]) the master spindle. The index may
+  // be the spindle's axis, SP<n> (from SPI(n) or S<n>).
+  double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
+  if (indices.size() == 1 && !indices[0].is_number()) {
+    const std::string& axis = indices[0].text;
+    const bool spindle_axis = axis.size() > 2 && axis.compare(0, 2, "SP") == 0 &&
+                              std::all_of(axis.begin() + 2, axis.end(), [](char c) { return c >= '0' && c <= '9'; });
+    k = spindle_axis && axis.size() <= 4 ? std::stod(axis.substr(2)) : -1.0;
+  }
   const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
   if (spindle < 0) return std::nullopt;
   return Value(actual ? interpreter_.actual_spindle_speed(spindle) : interpreter_.programmed_spindle_speed(spindle));

@@ -1,5 +1,6 @@
 // `$` system variables the program writes and the interpreter models: tool data $TC_DP3
-// (length), $TC_DP6 (radius) and $TC_DPNT (number of teeth) of tool t, edge d; settable frames $P_UIFR[n] (whole, from a
+// (length), $TC_DP6 (radius) and $TC_DPNT (number of teeth) of tool t, edge d, and the tool's
+// name $TC_TP2[t]; settable frames $P_UIFR[n] (whole, from a
 // frame function, or by component $P_UIFR[n, X, TR]; effective when next selected), the active
 // settable frame $P_IFRAME (whole or by component, at once) and the programmable frame
 // $P_PFRAME (whole or by component, at once) — frame_components.hpp. Other frame writes
@@ -33,6 +34,12 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
       const bool written = w.name == "$TC_DPNT" ? tools_.set_edge_teeth(t, d, w.value.number)
                                                 : tools_.set_edge_parameter(parameter, t, d, w.value.number);
       if (!written)
+        diagnostics_.warn(kNotModelled, w.name + ": index outside the tool table's range", where, block.text);
+      continue;
+    }
+    if (w.name == "$TC_TP2" && w.indices.size() == 1 && w.indices[0].is_number() && w.value.is_text()) {
+      const double t = w.indices[0].number;
+      if (!(t >= 1 && t <= 2147483647.0) || !tools_.set_tool_name(static_cast<int>(t), w.value.text))
         diagnostics_.warn(kNotModelled, w.name + ": index outside the tool table's range", where, block.text);
       continue;
     }

@@ -197,4 +197,15 @@ bool ToolState::set_edge_teeth(int t, int d, double teeth) {
   return true;
 }
 
+bool ToolState::set_tool_name(int t, const std::string& name) {
+  if (t < 1 || t > kMaxNumber) return false;
+  machine::Tool* tool = find_by_number(t);
+  if (!tool) {
+    table_.push_back({name, t, {}});
+    return true;
+  }
+  tool->name = name;
+  return true;
+}
+
 }  // namespace drycut::interp

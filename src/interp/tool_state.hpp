@@ -71,6 +71,9 @@ class ToolState {
   // active edge takes the new number with the next D or tool change, not at once. Returns false
   // for an index or value out of range.
   bool set_edge_teeth(int t, int d, double teeth);
+  // $TC_TP2[t] = "name": the name of tool t (created when missing), so T="name" and GETT find
+  // it. Returns false for a number out of range.
+  bool set_tool_name(int t, const std::string& name);
 
   bool change_on_m_code() const { return change_mode_ == 1; }
   int change_m_code() const { return change_m_code_; }

@@ -130,6 +130,10 @@ void ProgramLoader::execute_proc() {
       if (a->r_parameter) v.alias_number(a->r_parameter);
       else if (a->variable) v.alias(a->variable, a->element == SIZE_MAX ? 0 : a->element);
       else v.set(0, a->value, d.column);  // a value where a reference is possible: a copy
+    } else if (d.rank > 0) {
+      // An array by value: the subprogram gets a copy of the caller's elements (its writes stay
+      // local); before 2026-11-27 it got zeros, silently.
+      for (size_t e = 0; e < v.size(); ++e) v.set(e, a->variable->get(e), d.column);
     } else {
       v.set(0, a->value, d.column);
     }

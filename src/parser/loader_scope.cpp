@@ -118,6 +118,10 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
     // Frame components as indices of frame variables: $P_UIFR[1, X, TR] (PGA "Frame components").
     if (name == "TR" || name == "FI" || name == "RT" || name == "SC" || name == "MI") return Value::of_text(std::string(name));
     if (l.is_axis_name(name)) return Value::of_axis(std::string(name));
+    // S<n> names spindle n as an index of system variables ($AA_S[S1], $AA_COUP_ACT[S2]: Job
+    // Planning, "Coupled motion"; Function Manual S3): the same axis as SPI(n), SP<n>.
+    if (name.size() > 1 && name[0] == 'S' && name[1] != '0' && all_digits(name.substr(1)))
+      return Value::of_axis("SP" + std::string(name.substr(1)));
   }
   throw LineError(12550, column, "name " + std::string(name) + " not defined");
 }
