@@ -159,7 +159,9 @@ class ProgramLoader::BlockBuilder {
   }
 
   void assignment(const Item& item) {
-    if (item.name == "P" && item.index == kNoExpr && item.index_count == 0) {
+    // P= is the number of passes, unless the program defined a variable P (DEF INT P: a user
+    // name as the manuals' PROC examples use X and Y; then P=7 assigns it, as T=, F= ... do).
+    if (item.name == "P" && item.index == kNoExpr && item.index_count == 0 && !l_.find_variable("P")) {
       // At most 9999 passes; checked before the conversion (out of range it is undefined).
       const double p = l_.eval(item.expr);
       if (!(p <= 9999)) throw LineError(12160, item.column, "P (passes) must be at most 9999");
