@@ -35,10 +35,16 @@ bool is_expression_keyword(std::string_view name) {
 ExprIndex ExpressionParser::parse() { return frame_chain(); }
 
 // `:` chains FRAME values (PGA Job Planning "Frames": CTRANS(X,10) : CROT(Z,30)); lowest priority.
+void ExpressionParser::count_chain(int& length, uint32_t column) const {
+  if (++length > kMaxChain) throw LineError(12080, column, "too many operators in one chain");
+}
+
 ExprIndex ExpressionParser::frame_chain() {
   ExprIndex left = comparison();
+  int length = 0;
   while (peek().kind == TokenKind::Colon) {
     const uint32_t column = peek().column;
+    count_chain(length, column);
     ++pos_;
     left = pool_.add(ExprNode{ExprOp::FrameChain, Function::Sin, column, left, comparison(), 0.0, {}});
   }
@@ -47,7 +53,7 @@ ExprIndex ExpressionParser::frame_chain() {
 
 ExprIndex ExpressionParser::comparison() {
   ExprIndex left = concatenation();
-  for (;;) {
+  for (int length = 0;;) {
     ExprOp op;
     switch (peek().kind) {
       case TokenKind::Equal: op = ExprOp::Equal; break;
@@ -59,6 +65,7 @@ ExprIndex ExpressionParser::comparison() {
       default: return left;
     }
     const uint32_t column = peek().column;
+    count_chain(length, column);
     ++pos_;
     const ExprIndex right = concatenation();
     left = pool_.add(ExprNode{op, Function::Sin, column, left, right, 0.0, {}});
@@ -67,8 +74,10 @@ ExprIndex ExpressionParser::comparison() {
 
 ExprIndex ExpressionParser::concatenation() {
   ExprIndex left = logical_or();
+  int length = 0;
   while (peek().kind == TokenKind::Concat) {
     const uint32_t column = peek().column;
+    count_chain(length, column);
     ++pos_;
     left = pool_.add(ExprNode{ExprOp::Concat, Function::Sin, column, left, logical_or(), 0.0, {}});
   }

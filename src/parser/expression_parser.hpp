@@ -52,6 +52,12 @@ class ExpressionParser {
   }
 
   static constexpr int kMaxDepth = 200;
+  // Operators in one chain of comparisons, `<<` or `:`. A chain is a left-deep tree that the
+  // evaluator walks recursively with large frames (values, not numbers), so its length is its
+  // stack depth: 18,000 `==` overflowed the stack. No program chains more than a few; the
+  // numeric levels (+ - * / AND ...) take chains as long as a block with small frames.
+  static constexpr int kMaxChain = 500;
+  void count_chain(int& length, uint32_t column) const;
   std::span<const Token> tokens_;
   int depth_ = 0;
   size_t& pos_;

@@ -95,6 +95,19 @@ TEST(Expression, Alarms) {
   EXPECT_EQ(alarm_of("\"text\"+1"), 12150);
 }
 
+// A flat chain is as deep as it is long for the recursive evaluator: 18,000 comparisons or
+// 20,000 `<<` overflowed the stack (a crash). Past 500 they are an alarm; a chain within it
+// computes (1==1 is 1, so the whole chain is 1).
+TEST(Expression, OverlongComparisonChainIsAnAlarmNotACrash) {
+  std::string chain = "1", concat = "\"A\"", fine = "1";
+  for (int i = 0; i < 18000; ++i) chain += "==1";
+  for (int i = 0; i < 20000; ++i) concat += "<<\"A\"";
+  for (int i = 0; i < 500; ++i) fine += "==1";
+  EXPECT_EQ(alarm_of(chain), 12080);
+  EXPECT_EQ(alarm_of(concat), 12080);
+  EXPECT_DOUBLE_EQ(ev(fine), 1.0);
+}
+
 TEST(Expression, AlarmKnowsTheColumn) {
   try {
     ev("1+2/(3-3)");
