@@ -11,8 +11,10 @@ LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, ui
     it = sites_.emplace(site, Record{}).first;
   }
   Record& r = it->second;
-  if (r.visits > 0 && r.reads == reads && r.state == state)
-    return r.input_reads == input_reads ? Repeat::Endless : Repeat::WaitsOnInput;
+  // A wait on an input is a wait whatever else the stretch read: the input (or a synchronized
+  // action's variable) is what ends it on the machine.
+  if (r.visits > 0 && r.state == state && r.input_reads != input_reads) return Repeat::WaitsOnInput;
+  if (r.visits > 0 && r.reads == reads && r.state == state) return Repeat::Endless;
   if (++r.visits == r.next_save) {
     r.state = state;
     r.reads = reads;

@@ -15,7 +15,9 @@
 // A loop whose repeating stretch read a digital/analog input or PLC datum ($A_IN, $A_DBB ...)
 // is not endless on the machine: it waits for the PLC or the process to change that signal
 // (WHILE $A_IN[3]==0 ENDWHILE). The guard tells such a wait apart (Repeat::WaitsOnInput) by
-// the count of input reads between the saved visit and this one.
+// the count of input reads between the saved visit and this one, also when the stretch read
+// the interpreter's state besides (R20=$P_F in a loop polling a synchronized action's $R10:
+// before 2026-11-27 any such read made the guard give up, and the wait ran to the step limit).
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -25,9 +27,9 @@ namespace drycut::parser {
 class LoopGuard {
  public:
   enum class Repeat : uint8_t { No, Endless, WaitsOnInput };
-  // Endless (or WaitsOnInput) when `state` at `site` equals the saved one and no interpreter
-  // state was read since (`reads` is a running count of such reads); WaitsOnInput when inputs
-  // were read since (`input_reads`, a running count too).
+  // WaitsOnInput when `state` at `site` equals the saved one and inputs were read since
+  // (`input_reads`, a running count); else Endless when it equals it and no interpreter state
+  // was read since (`reads`, a running count of such reads).
   Repeat repeats(uint64_t site, const std::string& state, uint64_t reads, uint64_t input_reads);
 
  private:
