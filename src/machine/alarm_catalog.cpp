@@ -65,7 +65,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990004, S::Alarm, "Endless loop (the step limit is reached, or the program comes back to a state it had)", A::Drycut},
     AlarmInfo{990005, S::Alarm, "Program file cannot be read", A::Drycut},
     AlarmInfo{990006, S::Alarm, "Function not supported by drycut (it would change the path)", A::Drycut},
-    AlarmInfo{990007, S::Warning, "Value not known to drycut; the documented default is used", A::Drycut},
+    AlarmInfo{990007, S::Warning, "Value not known to drycut; an assumed value is used (the detail names it)", A::Drycut},
     AlarmInfo{990010, S::Alarm, "Program contains no blocks", A::Drycut},
     AlarmInfo{990012, S::Warning, "Tool or cutting edge not in the tool table", A::Drycut},
     AlarmInfo{990013, S::Warning, "Programmed value limited by the machine data", A::Drycut},
