@@ -38,7 +38,7 @@ class CubicBuilder final : public HermiteSplineBuilder {
       points_.push_back(node(i).point);
       if (i > lo) steps_.push_back(node(i).step);
     }
-    return cubic_spline_tangents(points_, steps_, left, right)[j - lo];
+    return cubic_spline_tangents(points_, steps_, left, right, scratch_)[j - lo];
   }
 
   void update_tangents() override {
@@ -144,6 +144,7 @@ class CubicBuilder final : public HermiteSplineBuilder {
   bool start_done_ = false;
   std::vector<Vec3> points_;   // scratch for one window
   std::vector<double> steps_;
+  CubicSplineScratch scratch_;  // one solve per point: no allocation per solve
 };
 
 }  // namespace
