@@ -45,10 +45,12 @@ void SplineRun::drain(ElementSink& sink) {
       pop_waiting();
       ++first_waiting_;
     }
-    PathElement element = waiting_[waiting_head_];
+    // A block owns at most one span (spline_builder.hpp), so its template is moved, not copied
+    // (the block text and label allocations per span): the next span belongs to a later block.
+    PathElement element = std::move(waiting_[waiting_head_]);
     element.kind = ElementKind::SplineSpan;
-    element.curve = span.curve;
-    last_tangent_ = span.curve->at(span.curve->length()).tangent;
+    element.curve = std::move(span.curve);
+    last_tangent_ = element.curve->at(element.curve->length()).tangent;
     has_last_tangent_ = true;
     sink.consume(std::move(element));
   }

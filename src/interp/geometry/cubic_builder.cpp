@@ -32,13 +32,8 @@ class CubicBuilder final : public HermiteSplineBuilder {
   // Solves the spline over nodes lo..hi and returns the tangent at node j.
   Vec3 window_tangent(size_t j, size_t lo, size_t hi, const TangentCondition& left,
                       const TangentCondition& right) {
-    points_.clear();
-    steps_.clear();
-    for (size_t i = lo; i <= hi; ++i) {
-      points_.push_back(node(i).point);
-      if (i > lo) steps_.push_back(node(i).step);
-    }
-    return cubic_spline_tangents(points_, steps_, left, right)[j - lo];
+    copy_window(lo, hi, points_, steps_);
+    return cubic_spline_tangents(points_, steps_, left, right, scratch_)[j - lo];
   }
 
   void update_tangents() override {
@@ -47,15 +42,8 @@ class CubicBuilder final : public HermiteSplineBuilder {
     const size_t last = n - 1;
     if (half_ == 0) {
       if (!finished()) return;
-      const auto m = [&] {
-        points_.clear();
-        steps_.clear();
-        for (size_t i = 0; i <= last; ++i) {
-          points_.push_back(node(i).point);
-          if (i > 0) steps_.push_back(node(i).step);
-        }
-        return cubic_spline_tangents(points_, steps_, begin_, as_tangent_condition(end_condition()));
-      }();
+      copy_window(0, last, points_, steps_);
+      const auto m = cubic_spline_tangents(points_, steps_, begin_, as_tangent_condition(end_condition()), scratch_);
       for (size_t i = 0; i <= last; ++i) { node(i).tangent = m[i]; node(i).has_tangent = true; }
       next_tangent_ = n;
       return;
@@ -99,13 +87,8 @@ class CubicBuilder final : public HermiteSplineBuilder {
     const size_t last = count() - 1;
     if (last <= 2) {
       // The whole run fits one solve: both ends at once.
-      points_.clear();
-      steps_.clear();
-      for (size_t i = 0; i <= last; ++i) {
-        points_.push_back(node(i).point);
-        if (i > 0) steps_.push_back(node(i).step);
-      }
-      const auto m = cubic_spline_tangents(points_, steps_, begin_, as_tangent_condition(end_condition()));
+      copy_window(0, last, points_, steps_);
+      const auto m = cubic_spline_tangents(points_, steps_, begin_, as_tangent_condition(end_condition()), scratch_);
       for (size_t i = 0; i <= last; ++i) { node(i).tangent = m[i]; node(i).has_tangent = true; }
       return;
     }
@@ -144,6 +127,7 @@ class CubicBuilder final : public HermiteSplineBuilder {
   bool start_done_ = false;
   std::vector<Vec3> points_;   // scratch for one window
   std::vector<double> steps_;
+  CubicSplineScratch scratch_;  // one solve per point: no allocation per solve
 };
 
 }  // namespace

@@ -6,10 +6,19 @@ namespace drycut::geometry {
 
 std::vector<Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<const double> steps,
                                         const TangentCondition& begin, const TangentCondition& end) {
+  CubicSplineScratch scratch;
+  const auto m = cubic_spline_tangents(points, steps, begin, end, scratch);
+  return {m.begin(), m.end()};
+}
+
+std::span<const Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<const double> steps,
+                                            const TangentCondition& begin, const TangentCondition& end,
+                                            CubicSplineScratch& scratch) {
   using Kind = TangentCondition::Kind;
   const size_t n = points.size() - 1;  // number of intervals
   const auto& h = steps;
-  std::vector<Vec3> d(n);
+  auto& d = scratch.slopes;
+  d.resize(n);
   for (size_t i = 0; i < n; ++i) d[i] = (points[i + 1] - points[i]) / h[i];
 
   Kind kb = begin.kind, ke = end.kind;
@@ -20,12 +29,17 @@ std::vector<Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<
     // Both conditions say "one cubic over both intervals": only the parabola is determined.
     const Vec3 m0 = parabola_start_tangent(points[0], points[1], points[2], h[0], h[1]);
     const Vec3 m2 = parabola_end_tangent(points[0], points[1], points[2], h[0], h[1]);
-    return {m0, 2.0 * d[0] - m0, m2};
+    scratch.tangents.assign({m0, 2.0 * d[0] - m0, m2});
+    return scratch.tangents;
   }
 
   // Tridiagonal rows: lower[i] m_{i-1} + diag[i] m_i + upper[i] m_{i+1} = rhs[i].
-  std::vector<double> lower(n + 1, 0.0), diag(n + 1, 0.0), upper(n + 1, 0.0);
-  std::vector<Vec3> rhs(n + 1, Vec3::Zero());
+  auto &lower = scratch.lower, &diag = scratch.diag, &upper = scratch.upper;
+  auto& rhs = scratch.rhs;
+  lower.assign(n + 1, 0.0);
+  diag.assign(n + 1, 0.0);
+  upper.assign(n + 1, 0.0);
+  rhs.assign(n + 1, Vec3::Zero());
   switch (kb) {
     case Kind::Clamped: diag[0] = 1.0; rhs[0] = begin.tangent; break;
     case Kind::Natural: diag[0] = 2.0; upper[0] = 1.0; rhs[0] = 3.0 * d[0]; break;
@@ -58,7 +72,8 @@ std::vector<Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<
     diag[i] -= f * upper[i - 1];
     rhs[i] -= f * rhs[i - 1];
   }
-  std::vector<Vec3> m(n + 1);
+  auto& m = scratch.tangents;
+  m.resize(n + 1);
   m[n] = rhs[n] / diag[n];
   for (size_t i = n; i-- > 0;) m[i] = (rhs[i] - upper[i] * m[i + 1]) / diag[i];
   return m;

@@ -3,6 +3,8 @@
 // parameter steps given), from the classical tridiagonal system
 //   h_i m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_{i-1} m_{i+1} = 3 (h_i d_{i-1} + h_{i-1} d_i),
 // d_i = (p_{i+1} - p_i) / h_i, closed by one end condition per side.
+// The windowed CSPLINE solves one such system per point: its scratch (CubicSplineScratch) is
+// kept by the caller, so a solve allocates nothing once the vectors have grown.
 #include <span>
 #include <vector>
 
@@ -21,5 +23,14 @@ struct TangentCondition {
 // the parabola through them.
 std::vector<Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<const double> steps,
                                         const TangentCondition& begin, const TangentCondition& end);
+
+// The same solve in reusable scratch; the tangents are `tangents` (valid until the next call).
+struct CubicSplineScratch {
+  std::vector<Vec3> slopes, rhs, tangents;
+  std::vector<double> lower, diag, upper;
+};
+std::span<const Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::span<const double> steps,
+                                            const TangentCondition& begin, const TangentCondition& end,
+                                            CubicSplineScratch& scratch);
 
 }  // namespace drycut::geometry

@@ -33,6 +33,19 @@ void HermiteSplineBuilder::finish(const SplineEnd& end) {
   emit_ready();
 }
 
+void HermiteSplineBuilder::copy_window(size_t lo, size_t hi, std::vector<Vec3>& points,
+                                       std::vector<double>& steps) const {
+  points.resize(hi - lo + 1);
+  steps.resize(hi - lo);
+  auto it = nodes_.begin() + static_cast<std::ptrdiff_t>(lo - first_);
+  points[0] = it->point;
+  for (size_t k = 1; k <= hi - lo; ++k) {
+    ++it;
+    points[k] = it->point;
+    steps[k - 1] = it->step;
+  }
+}
+
 bool HermiteSplineBuilder::pop_span(SplineSpan& out) {
   if (ready_.empty()) return false;
   out = std::move(ready_.front());

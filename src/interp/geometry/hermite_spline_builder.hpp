@@ -4,6 +4,7 @@
 // Hermite span per pair of consecutive points once both tangents are known. Points no longer
 // needed are dropped, so memory stays bounded by the method's look-ahead.
 #include <deque>
+#include <vector>
 
 #include "interp/geometry/spline_builder.hpp"
 
@@ -32,6 +33,9 @@ class HermiteSplineBuilder : public SplineBuilder {
   size_t count() const { return first_ + nodes_.size(); }  // distinct points so far
   Node& node(size_t i) { return nodes_[i - first_]; }
   const Node& node(size_t i) const { return nodes_[i - first_]; }
+  // Points lo..hi into `points` and the steps of lo+1..hi into `steps` (a window's linear
+  // system; walked by deque iterator, not indexed per node).
+  void copy_window(size_t lo, size_t hi, std::vector<Vec3>& points, std::vector<double>& steps) const;
   bool finished() const { return finished_; }
   const SplineEnd& end_condition() const { return end_; }
 

@@ -6,8 +6,10 @@
 // every span that is final, in order, possibly long before finish() (A and C splines only look a
 // few points ahead, so a run of a million blocks is never held in memory; the exception is the
 // global C spline, window 0). A span's block_index is the add_point index of the block it belongs
-// to. A block may own no span: a block to the same point as the previous one, and for B splines
-// the last degree-1 blocks (see make_nurbs_builder).
+// to. A block owns at most one span, so block indices of consecutive spans strictly increase (the
+// interpreter's SplineRun moves a block's element into its span). A block may own no span: a
+// block to the same point as the previous one, and for B splines the last degree-1 blocks (see
+// make_nurbs_builder).
 // Bad values (non-finite coordinates, PW outside [0, 3]) throw AlarmError 12160 without a
 // source location; the interpreter re-raises it with the block's location.
 #include <memory>

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "geometry_test_support.hpp"
 #include "interp/geometry/curve_sampler.hpp"
@@ -63,6 +64,38 @@ TEST(ArcLength, PolynomialShortcutMatchesRationalFormulas) {
     EXPECT_LT((a.d3 - b.d3).norm(), 1e-12 * (1 + a.d3.norm()));
     const double s = frac * poly.length();
     EXPECT_NEAR(poly.parameter_at(s), rational.parameter_at(s), 1e-12);
+  }
+}
+
+// The polynomial span's 5-node integrals evaluate their nodes two at a time (SIMD lanes): each
+// must equal, bit for bit, the 5-point Gauss rule over the scalar speed |c1 + u(2c2 + 3u c3)|
+// evaluated here one node at a time, on random spans and intervals.
+TEST(ArcLength, FiveNodeSpeedsMatchOneAtATimeBitForBit) {
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> coef(-50.0, 50.0), frac(0.0, 1.0);
+  constexpr double nodes[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                               0.9061798459386640};
+  constexpr double weights[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                 0.4786286704993665, 0.2369268850561891};
+  for (int trial = 0; trial < 2000; ++trial) {
+    Eigen::Matrix4d c = Eigen::Matrix4d::Zero();
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 4; ++k) c(r, k) = coef(rng) * std::pow(10.0, static_cast<int>(rng() % 7) - 3);
+    c(3, 0) = 1.0;
+    const double u_end = 0.01 + 5 * frac(rng);
+    const PolynomialSpan span(c, u_end);
+    // Per axis c1 + u (2 c2 + (3u) c3); the norm as (x² + y²) + z².
+    const auto speed = [&](double u) {
+      double d[3];
+      for (int r = 0; r < 3; ++r) d[r] = c(r, 1) + u * (2.0 * c(r, 2) + (3.0 * u) * c(r, 3));
+      return std::sqrt((d[0] * d[0] + d[1] * d[1]) + d[2] * d[2]);
+    };
+    double a = frac(rng) * u_end, b = frac(rng) * u_end;
+    if (a > b) std::swap(a, b);
+    const double half = 0.5 * (b - a), mid = 0.5 * (a + b);
+    double sum = 0.0;
+    for (int i = 0; i < 5; ++i) sum += weights[i] * speed(mid + half * nodes[i]);
+    ASSERT_EQ(span.arc_length_between(a, b), sum * half) << trial;
   }
 }
 

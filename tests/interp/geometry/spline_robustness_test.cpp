@@ -45,7 +45,15 @@ TEST(SplineRobustness, RandomRunsWithRepeatsCollinearStretchesAndHugeJumps) {
       builders.push_back(make_cubic_builder(e, 1));
       builders.push_back(make_nurbs_builder(2 + trial % 2));
       for (auto& b : builders) {
-        for (const auto& s : testing::run_spline(*b, pts, e)) expect_finite(*s.curve);
+        // A block owns at most one span (SplineRun moves the block's element into it): the
+        // block indices of consecutive spans strictly increase, within the run's blocks.
+        size_t previous = 0;
+        for (const auto& s : testing::run_spline(*b, pts, e)) {
+          expect_finite(*s.curve);
+          EXPECT_GT(s.block_index, previous);
+          EXPECT_LT(s.block_index, pts.size());
+          previous = s.block_index;
+        }
       }
     }
   }
