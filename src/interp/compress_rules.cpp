@@ -13,10 +13,11 @@ bool is_simple_block(const parser::Block& block, const ExtraAxes& extra_axes) {
   for (const auto& g : block.g)
     if (g.code != 1) return false;
   for (const auto& a : block.addresses) {
+    const std::string_view n = a.name;  // compared with literals by length first, not a memcmp each
     // Positions of the geometry axes and of the machine's further path axes (rotary A/C of a
     // 5-axis machine: Job Planning lists `X Y Z A B C F` blocks as compressible).
-    const bool position = a.name == "X" || a.name == "Y" || a.name == "Z" || extra_axes.index(a.name) >= 0;
-    if (!position && a.name != "F" && !is_orientation_word(a.name)) return false;
+    const bool position = axis_index(n) >= 0 || extra_axes.index(n) >= 0;
+    if (!position && n != "F" && !is_orientation_word(n)) return false;
     if (a.mode != parser::ValueMode::Default && a.mode != parser::ValueMode::Absolute &&
         a.mode != parser::ValueMode::Incremental)
       return false;

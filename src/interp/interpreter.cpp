@@ -8,6 +8,7 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <typeinfo>
 
 #include "interp/geometry/arc_solvers.hpp"
 #include "interp/feed_rate.hpp"
@@ -509,10 +510,13 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   return constant_cutting_speed_rpm(speed_mm_min, x0, x1, spindle_min_rpm_, max_rpm);
 }
 
-PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) const {
+PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) {
   PathElement e;
   e.kind = kind;
-  e.source = ctx.ref();
+  e.source = std::move(spare_source_);  // its text buffer takes the block text (emit)
+  e.source.file = ctx.block.file;
+  e.source.line = ctx.block.line;
+  e.source.text.assign(ctx.block.text);
   e.dynamics.transition = state_.transition;
   e.smoothing = state_.smoothing;
   e.dynamics.profile = state_.accel;
@@ -565,6 +569,20 @@ void Interpreter::emit(PathElement&& element) {
   }
   if (element.is_motion() && element.curve) note_compensated_end(element);
   sink_.consume(std::move(element));
+  spare_source_ = std::move(element.source);
+  if (element.curve) spare_curve_ = std::move(element.curve);
+}
+
+geometry::CurvePtr Interpreter::line_curve(const Vector3d& a, const Vector3d& b) {
+  // Only a spare held by nobody else may change (use_count 1: the worker that handed it back
+  // released its references before the batch came back, under the pipeline's lock).
+  if (spare_curve_ && spare_curve_.use_count() == 1 && typeid(*spare_curve_) == typeid(geometry::LineCurve)) {
+    // Built by make_shared<LineCurve> (not const), so it may be written through a const_cast.
+    *const_cast<geometry::LineCurve*>(static_cast<const geometry::LineCurve*>(spare_curve_.get())) =
+        geometry::LineCurve(a, b);
+    return std::move(spare_curve_);
+  }
+  return std::make_shared<geometry::LineCurve>(a, b);
 }
 
 void Interpreter::defer_compensation_selection(PathElement& element) {
@@ -675,8 +693,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   bool has_axis = false, has_plane_axis = false;  // the latter: an axis of the plane, or a polar word
   const PlaneIndices plane = state_.plane_indices();
   for (const AddressWord& a : ctx.block.addresses) {
-    const int i = axis_index(a.name);
-    const bool polar = a.name == "AP" || a.name == "RP";
+    const std::string_view n = a.name;  // compared with literals by length first, not a memcmp each
+    const int i = axis_index(n);
+    const bool polar = n == "AP" || n == "RP";
     has_axis = has_axis || i >= 0 || polar;
     has_plane_axis = has_plane_axis || i == plane.first || i == plane.second || polar;
   }

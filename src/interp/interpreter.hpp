@@ -198,7 +198,9 @@ class Interpreter {
   // compressor settings drycut does not model.
   void mark_for_compressor(const BlockContext& ctx, PathElement& element);
   void emit_control(BlockContext& ctx, ElementKind kind, std::string label);
-  PathElement element_template(const BlockContext& ctx, ElementKind kind) const;
+  PathElement element_template(const BlockContext& ctx, ElementKind kind);
+  // A line from a to b, built in spare_curve_ when nothing else holds it (no allocation).
+  geometry::CurvePtr line_curve(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
   // The path feed of a block of this length and chord (src/interp/feed_rate); alarms raised.
   double feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::Vector3d& chord);
   // Tooth feed G95 FZ (tooth_feed.cpp): the FZ word, an F in a block after FZ, and the feed
@@ -280,6 +282,14 @@ class Interpreter {
   ElementSink& downstream_;  // the stream after the interpreter (compensation, planner)
   ContourCorners corners_;  // every element goes through it (sink_ is this filter)
   ElementSink& sink_;
+  // What the sink left in the last moved-from element (the pipeline hands back a retired
+  // element's block reference and curve, pipelined_sink.hpp): the next element's block text and
+  // line are written into them instead of new heap blocks (element_template, line_curve).
+  BlockRef spare_source_;
+  geometry::CurvePtr spare_curve_;
+  // feed_mm_s's copy of the state with F = FB or FZ · teeth (feed_state): a member, so that the
+  // blocks that need none (nearly all) construct no ModalState.
+  ModalState feed_scratch_;
   // Contour recording: where corners_ sends the elements between BEGIN and END, and what END
   // restores (the tool has not moved).
   ContourRecorder recorder_;

@@ -31,10 +31,13 @@ inline constexpr int kNotModelled = 990002;  // catalogued warning: no effect on
 inline constexpr double kMaxAddressValue = 999999999.999;
 
 inline int axis_index(std::string_view name) {
-  if (name == "X") return 0;
-  if (name == "Y") return 1;
-  if (name == "Z") return 2;
-  return -1;
+  if (name.size() != 1) return -1;  // one compare, not a memcmp per letter
+  switch (name[0]) {
+    case 'X': return 0;
+    case 'Y': return 1;
+    case 'Z': return 2;
+    default: return -1;
+  }
 }
 
 // The machine axis of geometry axis X, Y, Z by its MD10000 AXCONF_MACHAX_NAME_TAB name: drycut's
@@ -119,8 +122,6 @@ namespace drycut::interp {
 // words in a fixed order, not in the order they are written).
 struct Interpreter::BlockContext {
   explicit BlockContext(const parser::Block& b) : block(b) {}
-  // The source of the elements this block makes (the text is copied once per element).
-  BlockRef ref() const { return BlockRef{block.file, block.line, block.text}; }
   const std::string& file_name() const {
     static const std::string kNone;
     return block.file ? *block.file : kNone;

@@ -48,7 +48,7 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   mark_for_compressor(ctx, e);
   request_corner(ctx, e);
   position_ = e.curve->end();
-  check_limits(ctx, position_);
+  if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
   emit(std::move(e));
 }
 
@@ -56,7 +56,7 @@ PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   PathElement e = element_template(ctx, ElementKind::Line);
   e.rapid = state_.motion == MotionMode::Rapid;
   e.label.assign(e.rapid ? std::string_view("G0") : motion_mode_name(state_.motion));
-  e.curve = std::make_shared<geometry::LineCurve>(position_, target);
+  e.curve = line_curve(position_, target);
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), target - position_);
   return e;
 }

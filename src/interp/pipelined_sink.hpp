@@ -24,9 +24,9 @@
 // Consumed batches go back to the producer, which refills them: their vectors keep their
 // capacity (a fresh 128-element vector is a large block whose malloc and free consolidate the
 // allocator's bins), and what the downstream left in the moved-from elements (the planner hands
-// back the block text and curve of the elements it retired) is released slot by slot as the
-// producer assigns the next elements: on the thread that allocated it, between the allocations
-// of the elements that follow, so that malloc's per-thread cache gives it out again at once.
+// back the block reference and curve of the elements it retired) goes back slot by slot in the
+// element the producer hands over next, in its place: the interpreter writes the next block
+// text and line into them (Interpreter::emit), so a block allocates neither.
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
@@ -114,7 +114,12 @@ class PipelinedSink final : public ElementSink {
 
   void put(PathElement&& element) {
     if (batch_.count < batch_.elements.size()) {
-      batch_.elements[batch_.count] = std::move(element);  // releases the leftover here
+      PathElement& slot = batch_.elements[batch_.count];
+      BlockRef source = std::move(slot.source);
+      geometry::CurvePtr curve = std::move(slot.curve);
+      slot = std::move(element);
+      element.source = std::move(source);  // the leftovers go back to the producer
+      element.curve = std::move(curve);
       batch_.marks[batch_.count] = mark_();
     } else {
       batch_.elements.push_back(std::move(element));

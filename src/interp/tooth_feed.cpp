@@ -62,7 +62,7 @@ double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::
     warn_once(ctx, 990016, buf, 0);
     state_.feed_type_changed = false;
   }
-  ModalState scratch;
+  ModalState& scratch = feed_scratch_;
   const FeedResult feed = path_feed(feed_state(ctx, scratch), spindle_speed(ctx, &chord), length_mm, chord,
                                      ctx.lead_change_mm);
   if (feed.alarm != 0) {

@@ -268,8 +268,8 @@ bool Planner::discretise(const WindowElement& w, double length, double& grid) {
 void Planner::append_motion(interp::PathElement&& element) {
   WindowElement& w = new_window_element();
   // A spare still holds the block reference and curve of the element it carried (retire_front):
-  // they go back with the caller's moved-from element, to be released on the thread that made
-  // them (the producer's, interp/pipelined_sink.hpp), where malloc takes them up again at once.
+  // they go back with the caller's moved-from element to the thread that made them (the
+  // producer's, interp/pipelined_sink.hpp), which writes the next block's text and line into them.
   BlockRef spare_source = std::move(w.element.source);
   geometry::CurvePtr spare_curve = std::move(w.element.curve);
   w.element = std::move(element);
