@@ -9,6 +9,7 @@
 #include "interp/frame_components.hpp"
 
 #include "parser/command_table.hpp"
+#include "parser/expression_evaluator.hpp"
 
 namespace drycut::interp {
 namespace {
@@ -236,6 +237,10 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
         k < ContourRecorder::kColumns && k == std::trunc(k))
       return number(contour.value(static_cast<size_t>(i), static_cast<int>(k), s.plane_indices()));
   }
+  // Whether the profile's machine_data gives $TC_CARR<k>[1] of the swivel data record: CYCLE800
+  // retracts and swivels only with data the profile has (docs/cycles.md "CYCLE800").
+  if (n == "$DRYCUT_SWIVEL_DATUM" && indices.size() == 1 && indices[0].is_number())
+    return Value(profile_.machine_data.count("$TC_CARR" + parser::as_text(indices[0]) + "[1]") ? 1.0 : 0.0);
   if (n == "$P_S" || n == "$AA_S") return spindle_speed(n == "$AA_S", indices);
   // The master spindle's number (MD20090, SETMS(n)).
   if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));

@@ -622,7 +622,8 @@ class Importer {
     out_.notes.push_back(written_name(*d) + " = \"" + *name + "\": not a geometry axis, no transverse axis imported");
   }
 
-  // $TC_CARR23 of the first tool carrier: T the table turns, P the head turns (M, mixed, is not modelled).
+  // $TC_CARR23 of the first tool carrier: T the tool turns (a head), P the part (a table); PGA
+  // "Toolholder data", Commissioning Manual IM9 21.7 (M, mixed, is not modelled).
   void read_swivel_kinematics() {
     for (int n = 1; n <= 99; ++n) {
       const MachineDatum* d = peek("$TC_CARR23[" + std::to_string(n) + "]");
@@ -630,7 +631,7 @@ class Importer {
       if (!kind) continue;
       const std::string k = upper_text(*kind);
       if (k == "T" || k == "P") {
-        out_.profile.swivel_kinematics = k == "T" ? "table" : "head";
+        out_.profile.swivel_kinematics = k == "P" ? "table" : "head";
         out_.sources["program.swivel_kinematics"] = {written_name(*d), d->location()};
       } else {
         out_.notes.push_back(written_name(*d) + " = \"" + *kind +

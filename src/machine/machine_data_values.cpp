@@ -82,6 +82,9 @@ std::map<std::string, std::string, std::less<>> machine_data_texts(const Machine
   for (const AxisData& a : p.extra_axes) channel_axis(a.name);
   md["$MC_CHAN_NAME"] = "CHAN1";  // MD20000 CHAN_NAME: the default name of channel 1
   if (!p.diameter_axis.empty()) md["$MC_DIAMETER_AX_DEF"] = p.diameter_axis;  // MD20100
+  // $TC_CARR23 of swivel data record 1, the kinematic type: T the tool turns (a head), P the part
+  // (a table); PGA "Toolholder data". No swivel data: empty (drycut).
+  md["$TC_CARR23[1]"] = p.swivel_kinematics == "head" ? "T" : p.swivel_kinematics == "table" ? "P" : "";
   return md;
 }
 

@@ -124,12 +124,13 @@ std::vector<LanguageFeature> language_features() {
     add(out, "G codes", g == 505 ? "G505 ... G599" : "G" + std::to_string(g), s, "");
   }
   for (std::string_view a : all_addresses()) add(out, "Addresses", std::string(a), Support::Modelled, "");
-  const std::array<std::pair<const char*, const char*>, 6> sysvars{{
+  const std::array<std::pair<const char*, const char*>, 7> sysvars{{
       {"$MN_ $MC_ $MA_[axis] $MM_", "machine data: the profile's value (its fields under their MD names, and its machine_data map), a few unmodelled data at their documented defaults; unknown: 0 and warning 990007"},
       {"$SN_ $SC_ $SA_[axis]", "setting data: as machine data"},
       {"$P_ $AA_ $AC_ $VA_ $A_", "programmed and actual state from the interpreter ($P_GG[g], $P_EP[ax], $AA_IM[ax], $P_F, $P_TOOLNO, $P_TOOL, $P_TOOLR, $P_AD[n] ...); unknown names: 0"},
       {"$A_IN $A_OUT $A_INA $A_OUTA $A_DBB $A_DBW $A_DBD $A_DBR", "inputs, outputs, PLC data: the profile's machine_data map, default 0"},
       {"$TC_DP3 $TC_DP6 [t, d] and other $TC_", "tool data: the run's tool table (type $TC_DP1, edge position $TC_DP2, lengths $TC_DP3..5, radius $TC_DP6, their wear $TC_DP12..15, base lengths $TC_DP21..23; the teeth $TC_DPNT for G95 FZ); written values are kept"},
+      {"$TC_CARR<k>[1] / $DRYCUT_SWIVEL_DATUM[k]", "swivel data record 1 (CYCLE800): the profile's machine_data ($TC_CARR23 from swivel_kinematics); $DRYCUT_SWIVEL_DATUM[k] is 1 when the profile gives $TC_CARR<k>[1] (docs/cycles.md \"CYCLE800\")"},
       {"any other $ name", "0 and warning 990007 (a write is kept)"},
   }};
   for (const auto& [name, meaning] : sysvars) add(out, "System variables", name, Support::Modelled, meaning);

@@ -147,7 +147,7 @@ TEST(MachineDataImport, ToolOffsetsAndSwivelTypeFromTheToolData) {
   ASSERT_NE(drill, nullptr);
   EXPECT_EQ(drill->name, "DRILL_8");
   EXPECT_DOUBLE_EQ(drill->edges.at(0).length_mm, 120.0);
-  EXPECT_EQ(p.swivel_kinematics, "table");  // $TC_CARR23[1] = "T"
+  EXPECT_EQ(p.swivel_kinematics, "head");  // $TC_CARR23[1] = "T": the tool turns
   EXPECT_DOUBLE_EQ(p.machine_data.at("$TC_DP1[1,1]"), 120.0);  // tool type: kept
   EXPECT_EQ(mill->edges[0].type, 120);                            // and the edge's type
   EXPECT_EQ(r.sources.at("tools[0].edges[0].length_mm").origin, kFile + ":104");
