@@ -639,8 +639,8 @@ void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, b
                      state_.motion == MotionMode::ArcThroughPoint || state_.motion == MotionMode::ArcTangent ||
                      state_.motion == MotionMode::ASpline || state_.motion == MotionMode::BSpline ||
                      state_.motion == MotionMode::CSpline || state_.motion == MotionMode::Polynomial;
-  // Selected in a block without motion in the plane (G41 G1 Z-2), the compensation starts with
-  // the next block that moves in it: that block is the selection block, so a circle there is
+  // Selected in a block that programs no axis of the plane (G41 G1 Z-2), the compensation starts with
+  // the next block that does: that block is the selection block, so a circle there is
   // refused as in the G41 block itself (drycut's reading of the rule; it ran the circle as a
   // straight approach, or a full circle uncompensated, silently).
   if (compensation_selection_pending_ && !ctx.compensation_changed && moves && curve &&
