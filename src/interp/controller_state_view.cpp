@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "interp/frame_components.hpp"
+#include "interp/interpreter_block.hpp"
 
 #include "parser/command_table.hpp"
 #include "parser/expression_evaluator.hpp"
@@ -99,9 +100,7 @@ std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<
   double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
   if (indices.size() == 1 && !indices[0].is_number()) {
     const std::string& axis = indices[0].text;
-    const bool spindle_axis = axis.size() > 2 && axis.compare(0, 2, "SP") == 0 &&
-                              std::all_of(axis.begin() + 2, axis.end(), [](char c) { return c >= '0' && c <= '9'; });
-    k = spindle_axis && axis.size() <= 4 ? std::stod(axis.substr(2)) : -1.0;
+    k = detail::is_spindle_axis_name(axis) && axis.size() <= 4 ? std::stod(axis.substr(2)) : -1.0;
   }
   const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
   if (spindle < 0) return std::nullopt;

@@ -118,13 +118,16 @@ void ToolState::activate_edge(int d, std::vector<ToolNotice>& notices) {
   missing(kIllegalDNumber, "tool " + *active_ + " has no edge D" + std::to_string(d), notices);
 }
 
+machine::Tool* ToolState::tool_for_write(int t) {
+  if (t < 1 || t > kMaxNumber) return nullptr;
+  if (machine::Tool* tool = find_by_number(t)) return tool;
+  table_.push_back({std::to_string(t), t, {}});
+  return &table_.back();
+}
+
 machine::ToolEdge* ToolState::edge_for_write(int t, int d) {
-  if (t < 1 || t > kMaxNumber || d < 1 || d > kMaxNumber) return nullptr;
-  machine::Tool* tool = find_by_number(t);
-  if (!tool) {
-    table_.push_back({std::to_string(t), t, {}});
-    tool = &table_.back();
-  }
+  machine::Tool* tool = d < 1 || d > kMaxNumber ? nullptr : tool_for_write(t);
+  if (!tool) return nullptr;
   for (auto& e : tool->edges)
     if (e.d == d) return &e;
   tool->edges.push_back({d, 0.0, 0.0});
@@ -198,12 +201,8 @@ bool ToolState::set_edge_teeth(int t, int d, double teeth) {
 }
 
 bool ToolState::set_tool_name(int t, const std::string& name) {
-  if (t < 1 || t > kMaxNumber) return false;
-  machine::Tool* tool = find_by_number(t);
-  if (!tool) {
-    table_.push_back({name, t, {}});
-    return true;
-  }
+  machine::Tool* tool = tool_for_write(t);
+  if (!tool) return false;
   tool->name = name;
   return true;
 }

@@ -91,6 +91,8 @@ class ToolState {
   // The offsets of edge d of the active tool; notices when tool or edge are not in the table.
   void activate_edge(int d, std::vector<ToolNotice>& notices);
   void missing(int number, const std::string& detail, std::vector<ToolNotice>& notices) const;
+  // Tool t, created (named by its number) when missing; nullptr for a number out of range.
+  machine::Tool* tool_for_write(int t);
   // Edge d of tool t, created (with a new tool) when missing; nullptr for indices out of range.
   machine::ToolEdge* edge_for_write(int t, int d);
 
