@@ -109,7 +109,10 @@ inline size_t lex_name(std::string_view s, size_t i, std::vector<Token>& out) {
     // letters or an underscore): one letter followed by a digit is an address word. It
     // ends with its digits, so compact blocks read as the control reads them:
     // "N10G1X10Y20" is N10 G1 X10 Y20, "S12M3" is S12 M3.
-    if (i < n && s[i] == '.') {  // "X12.345": the letter, then a decimal number
+    // "X12.345" and "X1EX2" (with its power of ten: 100, as "X1.0EX2"): the letter, then a
+    // decimal number. EX followed by digits is read as the exponent, not as a call of a
+    // program EX2 glued to the value.
+    if (i < n && (s[i] == '.' || scan_number(s, letters_end) > i)) {
       push(out, s, TokenKind::Name, start, 1);
       return lex_number(s, letters_end, out);
     }
