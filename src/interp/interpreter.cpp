@@ -84,6 +84,8 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   ctx.geometry_positioning = geometry_positioning;
   if (geometry_positioning == GeometryPositioning::WithPath)
     warn_once(ctx, "POS/POSA of a geometry axis in a block with path axes (it moves with the path, at the path feed)", 0);
+  if (geometry_positioning == GeometryPositioning::AloneAsync)
+    warn_once(ctx, "POSA of a geometry axis (planned as POS: the program waits for the axis instead of running on)", 0);
   ctx.simple = is_simple_block(block, extra_axes_);
   ctx.compensation_before = state_.compensation;
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
@@ -724,7 +726,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   emit_axis_waits(ctx);
   std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
 
-  if (ctx.geometry_positioning == GeometryPositioning::Alone) {
+  if (ctx.geometry_positioning == GeometryPositioning::Alone || ctx.geometry_positioning == GeometryPositioning::AloneAsync) {
     position_geometry_axes(ctx, std::move(extra));
   } else if (has_axis || full_circle) {
     move_to_target(ctx, std::move(extra));

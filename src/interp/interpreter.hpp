@@ -35,8 +35,9 @@ struct ArcResult;
 
 namespace drycut::interp {
 
-// A block's POS/POSA of geometry axes: none, alone (a positioning move) or beside path axes.
-enum class GeometryPositioning : uint8_t { None, Alone, WithPath };
+// A block's POS/POSA of geometry axes: none, alone (a positioning move; AloneAsync: a POSA
+// among them, planned as POS) or beside path axes.
+enum class GeometryPositioning : uint8_t { None, Alone, AloneAsync, WithPath };
 
 struct InterpreterOptions {
   bool optional_stop_active = false;  // M1 stops only when the operator selected it

@@ -210,7 +210,10 @@ std::optional<parser::Block> Interpreter::geometry_positioning_block(const parse
   const bool alone = std::none_of(block.addresses.begin(), block.addresses.end(), [this](const AddressWord& a) {
     return axis_index(a.name) >= 0 || a.name == "AP" || a.name == "RP";
   });
-  mode = alone ? GeometryPositioning::Alone : GeometryPositioning::WithPath;
+  const bool async = std::any_of(block.axis_words.begin(), block.axis_words.end(), [&](const AxisWord& w) {
+    return positions_geometry(w) && w.kind == AxisWordKind::PosA;
+  });
+  mode = !alone ? GeometryPositioning::WithPath : async ? GeometryPositioning::AloneAsync : GeometryPositioning::Alone;
   parser::Block moved = block;
   moved.axis_words.clear();
   for (const AxisWord& w : block.axis_words) {
@@ -234,6 +237,10 @@ void Interpreter::move_to_fixed_point(BlockContext& ctx) {
       raise(ctx, 12160, "FP must be 1..4 and goes with G75", fp->column);
     point = static_cast<int>(fp->value);
   }
+  // G74 in a program runs the axes' referencing (Function Manual R1, "Referencing": search for
+  // the cam and the zero mark at MD34020/MD34040, then MD34070), timed here as a rapid move.
+  if (ctx.home_move == 74)
+    warn_once(ctx, "G74 reference point approach (timed as one rapid move, not as the referencing sequence)", 0);
   Vector3d target = position_;
   for (const AddressWord& a : ctx.block.addresses) {
     const int i = std::max(axis_index(a.name), machine_axis_index(a.name));  // X or X1 (the other is -1)

@@ -442,6 +442,9 @@ void ProgramLoader::end_of_file() {
     text_.clear();
     raise(990010, "", 1);
   }
+  // The last block of a program carries its end (Fundamentals, "Structure and contents of an
+  // NC program"): a main program that runs off its file was most often cut off in transfer.
+  if (frames_.size() == 1) warn(990017, "the last block run is the end of the file", 1);
   finish_frame();
 }
 
