@@ -569,6 +569,7 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
 
 void Interpreter::emit(PathElement&& element) {
   if (run_up_.pending && element.is_motion() && !element.rapid) wait_for_spindle_speed(element);
+  if (run_up_mark_ != 0) element.run_up_start = std::exchange(run_up_mark_, 0);
   if (compensation_selection_pending_ && element.is_motion() && element.curve) defer_compensation_selection(element);
   add_nominal_time(element);
   if (element.kind == ElementKind::ToolChange) note_tool_change_stops_spindle();

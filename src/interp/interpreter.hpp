@@ -359,7 +359,7 @@ class Interpreter {
   // negative); the first path block with feed waits until it is in the set range (MD35150).
   struct SpindleCommand {
     SpindleState state = SpindleState::Stopped;
-    double value = 0.0;  // S, or the cutting speed under G96
+    double value = 0.0;  // S, or the cutting speed under G96 (mm/min)
     bool constant_cutting_speed = false;
     int master = 1;
     bool operator==(const SpindleCommand&) const = default;
@@ -369,12 +369,23 @@ class Interpreter {
     double from_rpm = 0.0;
     double to_rpm = 0.0;
     bool pending = false;  // no path block with feed has started since
+    // Under G96 once its first cut has started: the spindle follows the set speed along X.
+    bool follows_set_speed = false;
+    // The planner times the wait from the element that began this ramp (the ids of
+    // PathElement::run_up_start / run_up_wait); 0: a ramp SETMS brought back, estimated here.
+    uint32_t id = 0;
   };
   SpindleCommand spindle_command_;
   SpindleRunUp run_up_;
+  uint32_t run_up_count_ = 0;
+  uint32_t run_up_mark_ = 0;  // a ramp began: the next element emitted carries its id
   void note_spindle_change();
+  SpindleRunUp next_run_up(const SpindleCommand& old, const SpindleRunUp& ramp, double set_rpm) const;
+  void become_master_run_up(const SpindleCommand& command, const SpindleRunUp& ramp);
   void note_tool_change_stops_spindle();
   void wait_for_spindle_speed(const PathElement& next);
+  double rapid_time_s(const PathElement& e, double length) const;
+  double g96_set_speed(const Eigen::Vector3d& machine_position, double cutting_speed_mm_min) const;
   Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;
   double spindle_angle_ = 0.0;  // master spindle position after SPOS (degrees)
@@ -389,6 +400,8 @@ class Interpreter {
   struct OtherSpindle {
     double rpm = 0.0;
     SpindleState state = SpindleState::Clockwise;  // Stopped after M<n>=5 (else assumed turning)
+    SpindleCommand command;  // what its run-up last ramped to
+    SpindleRunUp run_up;
     bool turning() const { return state != SpindleState::Stopped; }
   };
   std::map<int, OtherSpindle> other_spindles_;

@@ -5,11 +5,34 @@
 // behind the interpreter (docs/controller-state.md "Clock, run-time counters ...").
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
 
 namespace drycut::interp {
+
+namespace {
+
+// Rest-to-rest time over a distance d at velocity v, acceleration a and jerk j (j <= 0: none):
+// each ramp from 0 to a speed u takes u/a + a/j (with a constant-acceleration phase, u·j >= a²)
+// or 2·sqrt(u/j) (jerk only) and covers u/2 per second of it, so up and down cover u·ramp(u).
+// Long enough: d/v + ramp(v). Else the peak u solves d = u·ramp(u): u = cbrt(d²·j/4) jerk only,
+// or u²/a + u·a/j = d with the acceleration phase; the time is 2·ramp(u).
+double rest_to_rest_s(double d, double v, double a, double j) {
+  if (d <= 0 || v <= 0 || a <= 0) return 0.0;
+  const bool jerk = j > 0 && std::isfinite(j);
+  const auto ramp = [&](double u) { return !jerk ? u / a : u * j >= a * a ? u / a + a / j : 2.0 * std::sqrt(u / j); };
+  if (d >= v * ramp(v)) return d / v + ramp(v);
+  double u = jerk ? std::cbrt(d * d * j / 4.0) : std::sqrt(d * a);
+  if (jerk && u * j >= a * a) {
+    const double b = a / j;
+    u = 0.5 * a * (std::sqrt(b * b + 4.0 * d / a) - b);
+  }
+  return 2.0 * ramp(u);
+}
+
+}  // namespace
 
 double Interpreter::poll_clock(uint64_t line) {
   if (line != line_at_poll_) {
@@ -51,17 +74,31 @@ void Interpreter::add_nominal_time(const PathElement& e) {
     if (tools_.has_tool()) cutting_time_s_ += length / e.feed_mm_s;  // a tool active (not T0): cutting
     return;
   }
-  // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest):
-  // the slowest axis's velocity and G0 acceleration, a trapezoid or, when too short, a triangle.
-  double v = 0, a = 0;
-  for (const auto& axis : profile_.axes) {
-    v = v > 0 ? std::min(v, axis.max_velocity_mm_s) : axis.max_velocity_mm_s;
-    const double accel = axis.max_accel_mm_s2 * profile_.g0_accel_factor;
-    a = a > 0 ? std::min(a, accel) : accel;
+  nominal_time_s_ += rapid_time_s(e, length);
+}
+
+double Interpreter::rapid_time_s(const PathElement& e, double length) const {
+  // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest) along
+  // its chord u: each axis i bounds the path to v_i/|u_i|, a_i/|u_i| (and under SOFT j_i/|u_i|
+  // besides the path jerk), with the G0 factors, the dynamic group and ACC/VELOLIM/JERKLIM, as
+  // the planner's element limits (motion/element_dynamics.cpp) take them.
+  if (length <= 0) return 0.0;
+  const Eigen::Vector3d u = (e.curve->end() - e.curve->start()) / length;
+  const machine::DynamicGroupFactors& group = profile_.dynamic_groups[static_cast<size_t>(e.dynamics.group)];
+  const bool soft = e.dynamics.profile == AccelProfile::Soft;
+  double v = std::numeric_limits<double>::infinity(), a = v;
+  double j = soft ? profile_.path_jerk_mm_s3 * group.max_path_jerk * profile_.g0_jerk_factor : 0.0;
+  for (size_t i = 0; i < 3 && i < profile_.axes.size(); ++i) {
+    const double t = std::abs(u[static_cast<Eigen::Index>(i)]);
+    if (t < 1e-12) continue;
+    const auto& axis = profile_.axes[i];
+    v = std::min(v, axis.max_velocity_mm_s * e.dynamics.limits.velocity[i] / t);
+    a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * e.dynamics.limits.accel[i] * profile_.g0_accel_factor / t);
+    if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * e.dynamics.limits.jerk[i] * profile_.g0_jerk_factor / t);
   }
-  if (v <= 0) return;
-  if (a <= 0) nominal_time_s_ += length / v;
-  else nominal_time_s_ += length >= v * v / a ? length / v + v / a : 2.0 * std::sqrt(length / a);
+  if (!std::isfinite(v) || v <= 0) return 0.0;
+  if (!std::isfinite(a) || a <= 0) return length / v;
+  return rest_to_rest_s(length, v, a, j);
 }
 
 }  // namespace drycut::interp

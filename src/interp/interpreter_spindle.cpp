@@ -1,7 +1,7 @@
 // The programmable spindle speed limits G25 S / G26 S and the dwell in spindle revolutions
 // G4 S / G4 S<n>= (Fundamentals, "Programmable spindle speed limitation (G25, G26)" and
 // "Dwell time (G4)"; docs/controller-state.md "Spindle speed limits"), the spindle speeds
-// $P_S / $AA_S read back, and the wait for the spindle run-up (MD35500; "Spindle run-up").
+// $P_S / $AA_S read back and SETMS. The run-up wait (MD35500) is interpreter_spindle_run_up.cpp.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -139,13 +139,20 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
     n = static_cast<int>(*v);
   }
   if (n == master_spindle_) return;
-  other_spindles_[master_spindle_] = OtherSpindle{state_.spindle_rpm, state_.spindle};
+  // Each spindle keeps its own run-up: the new master brings the ramp it is on (or came to).
+  other_spindles_[master_spindle_] = OtherSpindle{state_.spindle_rpm, state_.spindle, spindle_command_, run_up_};
   const auto it = other_spindles_.find(n);
-  const OtherSpindle next = it == other_spindles_.end() ? OtherSpindle{0.0, SpindleState::Stopped} : it->second;
-  if (it != other_spindles_.end()) other_spindles_.erase(it);
+  OtherSpindle next;
+  if (it == other_spindles_.end()) {
+    next = OtherSpindle{0.0, SpindleState::Stopped, SpindleCommand{SpindleState::Stopped, 0.0, false, n}, SpindleRunUp{}};
+  } else {
+    next = it->second;
+    other_spindles_.erase(it);
+  }
   state_.spindle_rpm = next.rpm;
   state_.spindle = next.state;
   master_spindle_ = n;
+  become_master_run_up(next.command, next.run_up);
 }
 
 double Interpreter::programmed_spindle_speed(int spindle) const {
@@ -172,56 +179,15 @@ double Interpreter::actual_spindle_speed(int spindle) const {
   } else if (master) {
     // G96: S is the cutting speed; the spindle turns at what it gives at the tool's diameter
     // now, as spindle_speed() plans it.
-    const Eigen::Vector3d tip = state_.frames.total(false).to_inner(position_ - length_applied_);
-    const double x = tip[state_.cutting_speed_axis];
-    rpm = constant_cutting_speed_rpm(cutting_speed_mm_min(rpm), x, x, spindle_min_rpm_, g96_speed_ceiling());
+    rpm = g96_set_speed(position_, cutting_speed_mm_min(rpm));
   }
   return state == SpindleState::CounterClockwise ? -rpm : rpm;
 }
 
-void Interpreter::note_spindle_change() {
-  // Function Manual S1, "Spindle in setpoint range": with MD35500 = 1 the path interpolation
-  // waits at the start of a traversing block after a programmed speed change until the actual
-  // speed is within MD35150 of the set speed. A G96 speed that follows the diameter is no
-  // programmed change. The ramp runs from wherever the last one had come to.
-  const SpindleCommand now{state_.spindle, state_.spindle_rpm, state_.constant_cutting_speed, master_spindle_};
-  if (now == spindle_command_) return;
-  spindle_command_ = now;
-  const double accel_rpm_s = profile_.spindle_speedctrl_accel_rev_s2 * 60.0;
-  const double ramp = run_up_.to_rpm - run_up_.from_rpm;
-  const double reached = std::min(std::abs(ramp), accel_rpm_s * (nominal_time_s_ - run_up_.since_s));
-  const double speed = run_up_.from_rpm + std::copysign(reached, ramp);
-  run_up_ = {nominal_time_s_, speed, actual_spindle_speed(0), profile_.spindle_on_speed_at_ipo_start > 0};
-}
-
-void Interpreter::wait_for_spindle_speed(const PathElement& next) {
-  // Called for the first element with feed after a speed change (G0 does not wait: its block
-  // runs while the spindle comes up, drycut's reading of MD35500). A stopped spindle holds
-  // nothing back. The wait is a dwell before the block: the ramp time into the set range less
-  // the nominal time (add_nominal_time's estimate of the planned time) since the change.
-  if (recorder_.active()) return;  // a contour recorded without moving: the first real cut waits
-  run_up_.pending = false;
-  if (run_up_.to_rpm == 0.0) return;
-  const double tolerance = profile_.spindle_des_velo_tol * std::abs(run_up_.to_rpm);
-  const double ramp_s = std::max(0.0, std::abs(run_up_.to_rpm - run_up_.from_rpm) - tolerance) /
-                        (profile_.spindle_speedctrl_accel_rev_s2 * 60.0);
-  const double wait_s = ramp_s - (nominal_time_s_ - run_up_.since_s);
-  if (wait_s <= 1e-9) return;
-  PathElement e;
-  e.kind = ElementKind::Dwell;
-  e.source = next.source;
-  e.dwell_s = wait_s;
-  e.label = "waiting for the spindle speed (MD35500)";
-  emit(std::move(e));
-}
-
-void Interpreter::note_tool_change_stops_spindle() {
-  // A tool change with M6 (MD22550 = 1, a milling machine's magazine) stops and orients the tool
-  // spindle for the changer: the next programmed speed, even the same S M3 again, ramps from
-  // standstill after it. A turret's T (MD22550 = 0, a lathe) leaves the work spindle turning.
-  if (!tools_.change_on_m_code()) return;
-  run_up_ = {nominal_time_s_, 0.0, 0.0, false};
-  spindle_command_ = SpindleCommand{SpindleState::Stopped, 0.0, false, master_spindle_};
+double Interpreter::g96_set_speed(const Eigen::Vector3d& machine_position, double cutting_speed_mm_min) const {
+  const Eigen::Vector3d tip = state_.frames.total(false).to_inner(machine_position - length_applied_);
+  const double x = tip[state_.cutting_speed_axis];
+  return constant_cutting_speed_rpm(cutting_speed_mm_min, x, x, spindle_min_rpm_, g96_speed_ceiling());
 }
 
 }  // namespace drycut::interp

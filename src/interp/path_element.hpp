@@ -152,6 +152,12 @@ struct PathElement {
   bool inserted = false;
   DynamicsMode dynamics;
   double dwell_s = 0.0;          // Dwell
+  // The spindle run-up (interp/interpreter_spindle_run_up.cpp): the element that begins ramp
+  // `run_up_start` (0: none); on the dwell that waits for it, the ramp's id and its time into the
+  // set range counted from that start (the planner times the wait from them).
+  uint32_t run_up_start = 0;
+  uint32_t run_up_wait = 0;
+  double run_up_s = 0.0;
   StopKind stop = StopKind::None;
   CompensationRequest compensation;
   std::string label;             // what produced it: "G1", "G2", "ASPLINE", "M0", "M6 FR_4", "G4"

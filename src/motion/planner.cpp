@@ -79,16 +79,18 @@ void Planner::consume(interp::PathElement&& element) {
       break;
     case interp::ElementKind::Dwell: {
       flush();
-      const double t = element.dwell_s;
-      account_pause(element, t);
+      note_run_up_start(element);
+      account_pause(element, dwell_time(element));
       break;
     }
     case interp::ElementKind::ToolChange:
       flush();
+      note_run_up_start(element);
       account_pause(element, profile_.tool_change_time_s);
       break;
     case interp::ElementKind::Stop: {
       flush();
+      note_run_up_start(element);
       // The program ends when every positioning axis is in position too.
       const double ready = element.stop == interp::StopKind::ProgramEnd ? positioning_.wait({}) : 0.0;
       account_pause(element, std::max(0.0, ready - clock_s_));
@@ -100,11 +102,23 @@ void Planner::consume(interp::PathElement&& element) {
       break;
     case interp::ElementKind::AxisWait: {
       flush();
+      note_run_up_start(element);
       const double ready = positioning_.wait(element.wait_axes);
       account_pause(element, std::max(0.0, ready - clock_s_));
       break;
     }
   }
+}
+
+void Planner::note_run_up_start(const interp::PathElement& e) {
+  if (e.run_up_start == 0) return;
+  run_up_id_ = e.run_up_start;
+  run_up_start_s_ = clock_s_;
+}
+
+double Planner::dwell_time(const interp::PathElement& e) const {
+  if (e.run_up_wait == 0 || e.run_up_wait != run_up_id_) return e.dwell_s;
+  return std::max(0.0, run_up_start_s_ + e.run_up_s - clock_s_);
 }
 
 void Planner::finish() {
@@ -119,6 +133,7 @@ void Planner::finish() {
 void Planner::append_passive(interp::PathElement element) {
   if (nodes_.empty()) {
     // Nothing in motion: report it at once (zero time).
+    note_run_up_start(element);
     BlockTiming t;
     t.source = element.source;
     t.label = element.label;
@@ -155,6 +170,7 @@ void Planner::append_positioning(interp::PathElement element) {
     return;
   }
   if (synchronous) flush();
+  note_run_up_start(element);
   const double block_start = continues_block(element.source) ? block_start_s_ : clock_s_;
   double ready = clock_s_;
   for (const auto& m : moves) {
@@ -438,6 +454,7 @@ void Planner::commit_front() {
   WindowElement& w = *elements_.front();
   const interp::PathElement& e = w.element;
   note_block_start(e.source);
+  note_run_up_start(e);
   if (e.kind == interp::ElementKind::Positioning)
     for (const auto& m : e.positioning) positioning_.start(m, block_start_s_);
 

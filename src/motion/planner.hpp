@@ -78,7 +78,12 @@
 // 6. Flush. Dwell, Stop, ToolChange and finish() flush: the last node is a real stop
 //    (Limit::ExactStop), a full backward pass runs, and every element is committed. Dwell
 //    adds dwell_s, ToolChange the profile's tool_change_time_s, M0 takes no time (the
-//    operator restarts) but starts the "after M0" clock.
+//    operator restarts) but starts the "after M0" clock. The wait for the spindle run-up
+//    (a Dwell with run_up_wait, interp/interpreter_spindle_run_up.cpp) is timed here: the
+//    clock when the element that began its ramp started (run_up_start, noted when that
+//    element is committed or, for a pause, reached) plus the ramp time run_up_s, less the
+//    clock now; if that element never came through (another stage dropped its mark), the
+//    interpreter's estimate dwell_s stands.
 //
 // 7. Extra axes (docs/axes.md). A synchronized extra axis (rotary A/B/C ...) moves linearly
 //    along its element. The planner plans along the PATH LENGTH (PathElement::path_length:
@@ -243,6 +248,11 @@ class Planner : public interp::ElementSink {
   PlanSummary summary_;
   PositioningAxes positioning_;
   double block_start_s_ = 0;
+  // The spindle ramp whose start was last passed (id 0: none) and the clock then.
+  uint32_t run_up_id_ = 0;
+  double run_up_start_s_ = 0;
+  void note_run_up_start(const interp::PathElement& e);
+  double dwell_time(const interp::PathElement& e) const;
   bool block_known_ = false;
   std::shared_ptr<const std::string> block_file_;
   uint32_t block_line_ = 0;

@@ -195,6 +195,36 @@ TEST(Planner, DwellAddsExactlyItsTime) {
   EXPECT_NEAR(r.summary.time_s, 2 * 1.002 + 2.5, 1e-9);
 }
 
+TEST(Planner, SpindleRunUpWaitCountsFromTheElementThatBeganTheRamp) {
+  // The ramp (2 s into range) begins with the first of two lines (1.002 s each, rest to rest:
+  // 1 + 10/5000); the wait is 2 - 2.004 < 0: none, whatever the interpreter's estimate (9 s).
+  // A second ramp of 3 s begins with a line of 1.002 s: the wait is 3 - 1.002 = 1.998 s.
+  auto first = line(O, Vec3(10, 0, 0), 600);
+  first.run_up_start = 1;
+  auto wait = passive(ElementKind::Dwell, "waiting for the spindle speed (MD35500)");
+  wait.dwell_s = 9.0;
+  wait.run_up_wait = 1;
+  wait.run_up_s = 2.0;
+  auto second = line(Vec3(10, 0, 0), O, 600);
+  second.run_up_start = 2;
+  auto wait2 = wait;
+  wait2.run_up_wait = 2;
+  wait2.run_up_s = 3.0;
+  // A wait whose ramp's first element never reached the planner keeps the estimate.
+  auto orphan = wait;
+  orphan.run_up_wait = 7;
+  orphan.dwell_s = 0.25;
+  auto exact = [](auto e) {
+    e.dynamics.exact_stop_this_block = true;
+    return e;
+  };
+  PlanRun r = plan(plain_profile(), {exact(first), exact(line(Vec3(10, 0, 0), O, 600)), wait, exact(second), wait2, orphan});
+  ASSERT_EQ(r.rec.blocks.size(), 6u);
+  EXPECT_DOUBLE_EQ(r.rec.blocks[2].time_s, 0.0);
+  EXPECT_NEAR(r.rec.blocks[4].time_s, 3.0 - 1.002, 1e-9);
+  EXPECT_DOUBLE_EQ(r.rec.blocks[5].time_s, 0.25);
+}
+
 TEST(Planner, ToolChangeAddsTheProfileTime) {
   PlanRun r = plan(plain_profile(), {passive(ElementKind::ToolChange, "M6"), line(O, Vec3(10, 0, 0), 600)});
   EXPECT_DOUBLE_EQ(r.rec.blocks[0].time_s, 3.0);
