@@ -41,8 +41,11 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   d.inserted = element.inserted && element.smoothing_deviation_mm < 0;
   d.block_length = element.block_length_mm > 0 ? element.block_length_mm : length;
   d.ovl_factor = profile.max_accel_ovl_factor;
-  if (!element.extra_axes.empty() && length > 0) {
+  // FGROUP without some geometry axis, or extra axes in the path length: the path parameter is
+  // not the curve's arc length.
+  if ((!element.extra_axes.empty() || element.geometry_feed_axes != 7) && length > 0)
     d.geometry_scale = element.curve ? element.curve->length() / length : 0.0;
+  if (!element.extra_axes.empty() && length > 0) {
     for (const auto& m : element.extra_axes) {
       const auto& axis = profile.extra_axes.at(static_cast<size_t>(m.axis));
       ExtraAxisTerm t;
