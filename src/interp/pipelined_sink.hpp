@@ -115,11 +115,11 @@ class PipelinedSink final : public ElementSink {
   void put(PathElement&& element) {
     if (batch_.count < batch_.elements.size()) {
       PathElement& slot = batch_.elements[batch_.count];
-      BlockRef source = std::move(slot.source);
       geometry::CurvePtr curve = std::move(slot.curve);
+      // The block text's buffer goes back without a step of its own: a std::string moved into
+      // one with a heap buffer leaves that buffer in the moved-from string (libstdc++).
       slot = std::move(element);
-      element.source = std::move(source);  // the leftovers go back to the producer
-      element.curve = std::move(curve);
+      element.curve = std::move(curve);  // the leftover curve goes back to the producer
       batch_.marks[batch_.count] = mark_();
     } else {
       batch_.elements.push_back(std::move(element));
