@@ -71,9 +71,12 @@ void Interpreter::execute(const parser::Block& block) {
     return;
   }
   GeometryPositioning mode = GeometryPositioning::None;
-  if (auto moved = geometry_positioning_block(block, mode)) {
-    execute_block(*moved, mode);
-    return;
+  // Only POS/POSA words can make one (most blocks have none: no std::optional<Block> for them).
+  if (!block.axis_words.empty()) {
+    if (auto moved = geometry_positioning_block(block, mode)) {
+      execute_block(*moved, mode);
+      return;
+    }
   }
   execute_block(block, GeometryPositioning::None);
 }
@@ -695,7 +698,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   emit_dynamics_change(ctx);
   block_names_plane_axis_ = false;
   if (execute_axis_instruction(ctx)) return;
-  if (const AddressWord* fp = ctx.block.find_address("FP"))
+  if (const AddressWord* fp = ctx.find_named("FP"))
     warn_once(ctx, "FP= without G75 (it selects the fixed point of G75 only)", fp->column);
   bool has_axis = false, has_plane_axis = false;  // the latter: an axis of the plane, or a polar word
   const PlaneIndices plane = state_.plane_indices();

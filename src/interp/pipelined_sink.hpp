@@ -44,7 +44,8 @@
 
 namespace drycut::interp {
 
-template <class Mark>
+// MarkFn: the callable that takes the mark (a lambda's own type saves an indirect call per element).
+template <class Mark, class MarkFn = std::function<Mark()>>
 class PipelinedSink final : public ElementSink {
  public:
   static constexpr size_t kBatch = 128;
@@ -55,7 +56,7 @@ class PipelinedSink final : public ElementSink {
     Mark mark;  // the producer's mark when it handed over the element that raised it
   };
 
-  PipelinedSink(ElementSink& downstream, std::function<Mark()> mark)
+  PipelinedSink(ElementSink& downstream, MarkFn mark)
       : downstream_(downstream), mark_(std::move(mark)), worker_([this] { work(); }) {}
   PipelinedSink(const PipelinedSink&) = delete;
   PipelinedSink& operator=(const PipelinedSink&) = delete;
@@ -211,7 +212,7 @@ class PipelinedSink final : public ElementSink {
   }
 
   ElementSink& downstream_;
-  std::function<Mark()> mark_;
+  MarkFn mark_;
   Batch batch_;  // the producer's batch being filled
 
   bool delivered_ = false;  // the producer has been told of the failure
