@@ -95,12 +95,14 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
     if (spline_.active()) end_spline_run(nullptr);
     emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
   }
-  apply_system_writes(block);
+  // The passes over words a block may not have are skipped here: each is a loop over its words,
+  // and the call alone costs a CAM block more than the test.
+  if (!block.system_writes.empty()) apply_system_writes(block);
   apply_g_words(ctx);
-  apply_commands(ctx);
+  if (!block.commands.empty()) apply_commands(ctx);
   apply_addresses(ctx);
-  apply_axis_words(ctx);
-  apply_m_words(ctx);
+  if (!block.axis_words.empty()) apply_axis_words(ctx);
+  if (!block.m.empty()) apply_m_words(ctx);
   note_spindle_change();
   // G63 (tapping with a compensating chuck; Fundamentals, "Tapping with compensating chuck
   // (G63)") is non-modal: its block runs linear at F (at a fixed 100 % override, as drycut plans
@@ -724,8 +726,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   // the heap: an empty std::optional<PathElement> still clears its storage on every block.)
   std::unique_ptr<PathElement> dwell;
   if (ctx.dwell) dwell = std::make_unique<PathElement>(dwell_element(ctx));
-  emit_axis_waits(ctx);
-  std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
+  if (!ctx.waits.empty()) emit_axis_waits(ctx);  // (tested here: most blocks wait for no axis)
+  std::vector<ExtraAxisMove> extra;
+  if (!ctx.extra_words.empty()) extra = take_extra_axis_moves(ctx);
 
   if (ctx.geometry_positioning == GeometryPositioning::Alone) {
     position_geometry_axes(ctx, std::move(extra));
@@ -743,7 +746,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   } else if (stops && spline_.active()) {
     end_spline_run(nullptr);
   }
-  emit_positioning(ctx);
+  if (!ctx.positioning.empty()) emit_positioning(ctx);
   if (has_axis || full_circle) thread_chain_ = state_.thread_mode() ? std::optional(state_.motion) : std::nullopt;
   if (!state_.spline_mode()) quota_.stop();
   if (quota_.active() && !quota_.record(has_axis))
