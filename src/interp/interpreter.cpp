@@ -263,7 +263,7 @@ void Interpreter::apply_commands(BlockContext& ctx) {
 }
 
 void Interpreter::apply_addresses(BlockContext& ctx) {
-  note_tool_change_m_words(ctx);
+  if (!ctx.block.m.empty()) note_tool_change_m_words(ctx);  // (a pass over the M words)
   // T="name" is not an address word: program it before the words so that a D in the same block
   // (`T="BALL_R3" D1`, as posts write it) belongs to the prepared tool, as with `T1 D1`.
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
