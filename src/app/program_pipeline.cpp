@@ -87,10 +87,11 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
   loader.open_main(options.program);  // UsageError when the file cannot be read
 
   // Interpretation on this thread, everything after it on a worker: the same stream, in parallel.
-  interp::PipelinedSink<ProducerMark> pipe(sink, [&] {
+  auto mark = [&] {
     return ProducerMark{outcome.diagnostics.items().size(), loader.blocks_executed(), loader.steps(),
                         loader.programs_used().size()};
-  });
+  };
+  interp::PipelinedSink<ProducerMark, decltype(mark)> pipe(sink, mark);
   interp::Interpreter interpreter(profile, pipe, outcome.diagnostics);
   interp::InterpreterStateView state_view(interpreter, profile);
   loader.set_state_view(&state_view);  // $P_/$AA_/$TC_ reads see the interpreted state

@@ -33,8 +33,7 @@ FeedResult thread_feed(const ModalState& state, double rpm, double length, const
 FeedResult path_feed(const ModalState& state, double spindle_rpm, double length_mm, const Eigen::Vector3d& chord,
                      double lead_change_mm) {
   if (state.thread_mode()) return thread_feed(state, spindle_rpm, length_mm, chord, lead_change_mm);
-  const std::string name(motion_mode_name(state.motion));
-  if (state.feed <= 0) return {0, 10860, "no F programmed for " + name};
+  if (state.feed <= 0) return {0, 10860, "no F programmed for " + std::string(motion_mode_name(state.motion))};
   switch (state.feed_mode) {
     case FeedMode::PerMinute:
       return {state.feed * state.feed_unit_mm / 60.0, 0, ""};

@@ -71,9 +71,12 @@ void Interpreter::execute(const parser::Block& block) {
     return;
   }
   GeometryPositioning mode = GeometryPositioning::None;
-  if (auto moved = geometry_positioning_block(block, mode)) {
-    execute_block(*moved, mode);
-    return;
+  // Only POS/POSA words can make one (most blocks have none: no std::optional<Block> for them).
+  if (!block.axis_words.empty()) {
+    if (auto moved = geometry_positioning_block(block, mode)) {
+      execute_block(*moved, mode);
+      return;
+    }
   }
   execute_block(block, GeometryPositioning::None);
 }
@@ -94,12 +97,14 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
     if (spline_.active()) end_spline_run(nullptr);
     emit_preprocessing_stop(ctx, "STOPRE (implicit: main-run variable read)");
   }
-  apply_system_writes(block);
+  // The passes over words a block may not have are skipped here: each is a loop over its words,
+  // and the call alone costs a CAM block more than the test.
+  if (!block.system_writes.empty()) apply_system_writes(block);
   apply_g_words(ctx);
-  apply_commands(ctx);
+  if (!block.commands.empty()) apply_commands(ctx);
   apply_addresses(ctx);
-  apply_axis_words(ctx);
-  apply_m_words(ctx);
+  if (!block.axis_words.empty()) apply_axis_words(ctx);
+  if (!block.m.empty()) apply_m_words(ctx);
   note_spindle_change();
   // G63 (tapping with a compensating chuck; Fundamentals, "Tapping with compensating chuck
   // (G63)") is non-modal: its block runs linear at F (at a fixed 100 % override, as drycut plans
@@ -260,7 +265,7 @@ void Interpreter::apply_commands(BlockContext& ctx) {
 }
 
 void Interpreter::apply_addresses(BlockContext& ctx) {
-  note_tool_change_m_words(ctx);
+  if (!ctx.block.m.empty()) note_tool_change_m_words(ctx);  // (a pass over the M words)
   // T="name" is not an address word: program it before the words so that a D in the same block
   // (`T="BALL_R3" D1`, as posts write it) belongs to the prepared tool, as with `T1 D1`.
   if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
@@ -698,7 +703,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   emit_dynamics_change(ctx);
   block_names_plane_axis_ = false;
   if (execute_axis_instruction(ctx)) return;
-  if (const AddressWord* fp = ctx.block.find_address("FP"))
+  if (const AddressWord* fp = ctx.find_named("FP"))
     warn_once(ctx, "FP= without G75 (it selects the fixed point of G75 only)", fp->column);
   bool has_axis = false, has_plane_axis = false;  // the latter: an axis of the plane, or a polar word
   const PlaneIndices plane = state_.plane_indices();
@@ -724,8 +729,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   // the heap: an empty std::optional<PathElement> still clears its storage on every block.)
   std::unique_ptr<PathElement> dwell;
   if (ctx.dwell) dwell = std::make_unique<PathElement>(dwell_element(ctx));
-  emit_axis_waits(ctx);
-  std::vector<ExtraAxisMove> extra = take_extra_axis_moves(ctx);
+  if (!ctx.waits.empty()) emit_axis_waits(ctx);  // (tested here: most blocks wait for no axis)
+  std::vector<ExtraAxisMove> extra;
+  if (!ctx.extra_words.empty()) extra = take_extra_axis_moves(ctx);
 
   if (ctx.geometry_positioning == GeometryPositioning::Alone || ctx.geometry_positioning == GeometryPositioning::AloneAsync) {
     position_geometry_axes(ctx, std::move(extra));
@@ -743,7 +749,7 @@ void Interpreter::execute_motion(BlockContext& ctx) {
   } else if (stops && spline_.active()) {
     end_spline_run(nullptr);
   }
-  emit_positioning(ctx);
+  if (!ctx.positioning.empty()) emit_positioning(ctx);
   if (has_axis || full_circle) thread_chain_ = state_.thread_mode() ? std::optional(state_.motion) : std::nullopt;
   if (!state_.spline_mode()) quota_.stop();
   if (quota_.active() && !quota_.record(has_axis))

@@ -121,12 +121,18 @@ namespace drycut::interp {
 // Everything one block asks for, gathered before anything moves (SINUMERIK executes a block's
 // words in a fixed order, not in the order they are written).
 struct Interpreter::BlockContext {
-  explicit BlockContext(const parser::Block& b) : block(b) {}
+  explicit BlockContext(const parser::Block& b) : block(b), named_words(has_named_words(b)) {}
   const std::string& file_name() const {
     static const std::string kNone;
     return block.file ? *block.file : kNone;
   }
+  // An address of two or more letters (FP, AP, RP, ANG ...) in this block. A block of one-letter
+  // words only (most blocks of a CAM program) answers at once, without a pass over its words.
+  const parser::AddressWord* find_named(std::string_view name) const {
+    return named_words ? block.find_address(name) : nullptr;
+  }
   const parser::Block& block;
+  const bool named_words;  // an address of two or more letters stands in the block
   bool exact_stop = false;      // G9
   bool suppress_offsets = false;  // G53, G153, SUPA: no frame for this block
   int home_move = 0;              // G74 (reference point) / G75 (fixed point) in this block
@@ -161,6 +167,13 @@ struct Interpreter::BlockContext {
   bool corner_used = false;  // request_corner took the block's words
   bool simple = false;  // a block the compressor may join: nothing but G1, X/Y/Z and F (compress_rules.cpp)
   GeometryPositioning geometry_positioning = GeometryPositioning::None;  // POS/POSA of X/Y/Z
+
+ private:
+  static bool has_named_words(const parser::Block& b) {
+    for (const parser::AddressWord& a : b.addresses)
+      if (a.name.size() > 1) return true;
+    return false;
+  }
 };
 
 

@@ -76,11 +76,11 @@ bool Interpreter::is_incremental(const AddressWord& a) const {
 
 PolarWords Interpreter::polar_words(const BlockContext& ctx) const {
   PolarWords w;
-  if (const AddressWord* ap = ctx.block.find_address("AP")) {
+  if (const AddressWord* ap = ctx.find_named("AP")) {
     w.angle_deg = ap->value;
     w.angle_incremental = ap->mode == ValueMode::Incremental;
   }
-  if (const AddressWord* rp = ctx.block.find_address("RP")) w.radius_mm = rp->value * (state_.inch ? kMmPerInch : 1.0);
+  if (const AddressWord* rp = ctx.find_named("RP")) w.radius_mm = rp->value * (state_.inch ? kMmPerInch : 1.0);
   return w;
 }
 
@@ -192,7 +192,7 @@ void Interpreter::apply_contour_angle(const BlockContext& ctx, const Frame& fram
   // One straight line by an end coordinate and its angle (Fundamentals, "Contour definitions:
   // one straight line"): ANG is the angle to the abscissa of the plane, counter-clockwise
   // positive; the other plane coordinate of the end point follows from the start point.
-  const AddressWord* ang = ctx.block.find_address("ANG");
+  const AddressWord* ang = ctx.find_named("ANG");
   if (!ang || ctx.contour_corner_done) return;
   const PlaneIndices plane = state_.plane_indices();
   const bool first = ctx.block.find_address(profile_.axes[static_cast<size_t>(plane.first)].name) != nullptr;
@@ -218,7 +218,7 @@ bool Interpreter::hold_contour_angle(BlockContext& ctx, bool has_axis) {
   // Two straight lines (Fundamentals, "Contour definitions: two straight lines"): a G0/G1 block
   // with ANG= and no end point gives the first line's direction; the next block gives the end
   // point and the second line's angle, and the corner is where the two lines meet.
-  const AddressWord* ang = ctx.block.find_address("ANG");
+  const AddressWord* ang = ctx.find_named("ANG");
   if (!ang || has_axis || !state_.straight_mode()) return false;
   held_angle_deg_ = ang->value;
   // A rounding or chamfer written here belongs to the corner of the two lines (Fundamentals,
@@ -230,7 +230,7 @@ bool Interpreter::hold_contour_angle(BlockContext& ctx, bool has_axis) {
 
 void Interpreter::run_to_contour_corner(BlockContext& ctx) {
   const double first_deg = *std::exchange(held_angle_deg_, std::nullopt);
-  const AddressWord* ang = ctx.block.find_address("ANG");
+  const AddressWord* ang = ctx.find_named("ANG");
   const PlaneIndices plane = state_.plane_indices();
   const auto written = [&](int i) { return ctx.block.find_address(profile_.axes[static_cast<size_t>(i)].name); };
   const AddressWord* a1 = written(plane.first);

@@ -44,7 +44,7 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
     Vector3d direction = e.curve->length() > 0 ? e.curve->at(0).tangent : Vector3d::Zero();
     end_spline_run(direction.norm() > 0 ? &direction : nullptr);
   }
-  attach_extra_axes(ctx, e, std::move(extra));
+  if (!extra.empty()) attach_extra_axes(ctx, e, std::move(extra));  // (most blocks move no extra axis)
   mark_for_compressor(ctx, e);
   request_corner(ctx, e);
   position_ = e.curve->end();

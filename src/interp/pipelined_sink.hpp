@@ -44,7 +44,8 @@
 
 namespace drycut::interp {
 
-template <class Mark>
+// MarkFn: the callable that takes the mark (a lambda's own type saves an indirect call per element).
+template <class Mark, class MarkFn = std::function<Mark()>>
 class PipelinedSink final : public ElementSink {
  public:
   static constexpr size_t kBatch = 128;
@@ -55,7 +56,7 @@ class PipelinedSink final : public ElementSink {
     Mark mark;  // the producer's mark when it handed over the element that raised it
   };
 
-  PipelinedSink(ElementSink& downstream, std::function<Mark()> mark)
+  PipelinedSink(ElementSink& downstream, MarkFn mark)
       : downstream_(downstream), mark_(std::move(mark)), worker_([this] { work(); }) {}
   PipelinedSink(const PipelinedSink&) = delete;
   PipelinedSink& operator=(const PipelinedSink&) = delete;
@@ -115,11 +116,11 @@ class PipelinedSink final : public ElementSink {
   void put(PathElement&& element) {
     if (batch_.count < batch_.elements.size()) {
       PathElement& slot = batch_.elements[batch_.count];
-      BlockRef source = std::move(slot.source);
       geometry::CurvePtr curve = std::move(slot.curve);
+      // The block text's buffer goes back without a step of its own: a std::string moved into
+      // one with a heap buffer leaves that buffer in the moved-from string (libstdc++).
       slot = std::move(element);
-      element.source = std::move(source);  // the leftovers go back to the producer
-      element.curve = std::move(curve);
+      element.curve = std::move(curve);  // the leftover curve goes back to the producer
       batch_.marks[batch_.count] = mark_();
     } else {
       batch_.elements.push_back(std::move(element));
@@ -211,7 +212,7 @@ class PipelinedSink final : public ElementSink {
   }
 
   ElementSink& downstream_;
-  std::function<Mark()> mark_;
+  MarkFn mark_;
   Batch batch_;  // the producer's batch being filled
 
   bool delivered_ = false;  // the producer has been told of the failure

@@ -20,7 +20,11 @@ class ProgramLoader::BlockBuilder {
   BlockBuilder(ProgramLoader& loader, Block& out) : l_(loader), out_(out), f_(*loader.frames_.back()) {}
 
   bool build() {
+    // The file pointer outlives clear(): most blocks come from the file of the one before, and
+    // an unchanged shared_ptr costs no atomic reference-count change (finish()).
+    std::shared_ptr<const std::string> file = std::move(out_.file);
     out_.clear();
+    out_.file = std::move(file);
     for (const Item& item : l_.parsed_.items) {
       switch (item.kind) {
         case ItemKind::G: g_word(item, item.code); break;
@@ -91,7 +95,8 @@ class ProgramLoader::BlockBuilder {
   }
 
   void address(const Item& item) {
-    if (!is_address(item.name)) throw LineError(12550, item.column, "address " + std::string(item.name) + " not defined");
+    if (item.name.size() == 1 ? !is_address_letter(item.name[0]) : !is_address(item.name))
+      throw LineError(12550, item.column, "address " + std::string(item.name) + " not defined");
     refuse_repeated(item.name, item.column);
     AddressWord& w = out_.addresses.emplace_back();  // no temporary: the hot path of every block
     w.name.assign(item.name);
@@ -582,7 +587,7 @@ class ProgramLoader::BlockBuilder {
       l_.pending_ = action_;
     }
     if (!has_words_) return false;
-    out_.file = f_.file;
+    if (out_.file != f_.file) out_.file = f_.file;
     out_.line = l_.position_.line;
     out_.text.assign(trimmed(l_.text_));
     out_.number = l_.parsed_.number;

@@ -417,15 +417,7 @@ bool is_extended_address(std::string_view name) {
 
 bool is_address(std::string_view name) {
   // The one-letter addresses are most of every program: answered without the table.
-  if (name.size() == 1) {
-    switch (name[0]) {  // a jump, not a library search of the letters
-      case 'X': case 'Y': case 'Z': case 'A': case 'B': case 'C': case 'U': case 'V': case 'W': case 'I':
-      case 'J': case 'K': case 'F': case 'S': case 'D': case 'H': case 'T': case 'E': case 'Q':
-        return true;
-      default:
-        return false;
-    }
-  }
+  if (name.size() == 1) return is_address_letter(name[0]);  // a jump, not a library search of the letters
   return std::find(kAddresses.begin(), kAddresses.end(), name) != kAddresses.end();
 }
 

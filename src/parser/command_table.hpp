@@ -28,6 +28,16 @@ bool is_transformation_command(std::string_view upper_name);
 Support g_code_support(int64_t code);
 // Addresses that carry a value: X Y Z A B C ... F S D H T, I1 J1 K1, PW SD PL CR AR AP RP TURN.
 bool is_address(std::string_view upper_name);
+// The one-letter addresses (most words of every program), inline: a jump, no call.
+inline bool is_address_letter(char c) {
+  switch (c) {
+    case 'X': case 'Y': case 'Z': case 'A': case 'B': case 'C': case 'U': case 'V': case 'W': case 'I':
+    case 'J': case 'K': case 'F': case 'S': case 'D': case 'H': case 'T': case 'E': case 'Q':
+      return true;
+    default:
+      return false;
+  }
+}
 // Extended addresses: an address letter with a numeric extension, X1= (axis), S1= (spindle),
 // H7= (auxiliary function), D2=, T1=.
 bool is_extended_address(std::string_view upper_name);
