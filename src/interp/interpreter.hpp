@@ -354,9 +354,10 @@ class Interpreter {
     double from_rpm = 0.0;
   };
   SpindleBraking master_braking_;
-  // Spindle run-up (MD35500, interpreter_spindle.cpp): after a programmed change of the master
+  // Spindle run-up (MD35500, interpreter_spindle_run_up.cpp): after a programmed change of a
   // spindle's speed it ramps at MD35200 from the speed it had to the new set speed (signed: M4
-  // negative); the first path block with feed waits until it is in the set range (MD35150).
+  // negative); the master's first path block with feed waits until it is in the set range
+  // (MD35150).
   struct SpindleCommand {
     SpindleState state = SpindleState::Stopped;
     double value = 0.0;  // S, or the cutting speed under G96 (mm/min)
