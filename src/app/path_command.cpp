@@ -7,6 +7,7 @@
 #include "app/program_pipeline.hpp"
 #include "report/element_listing.hpp"
 #include "report/path_csv_writer.hpp"
+#include "report/run_completion.hpp"
 
 namespace drycut::app {
 
@@ -47,6 +48,7 @@ void register_path(CLI::App& app) {
       else writer = std::make_unique<report::PathCsvWriter>(out, options->step_mm);
       PipelineOutcome outcome = options->tool_centre ? run_program_tool_centre(options->program, profile, *writer)
                                                      : run_program(options->program, profile, *writer);
+      report::mark_incomplete(out, report::run_completion(outcome.diagnostics.items(), outcome.alarm));
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut path: %s\n", e.what());

@@ -169,6 +169,7 @@ void register_run(CLI::App& app) {
       const motion::PlanSummary& summary = planner.summary();
       const report::RunCompletion completion = report::run_completion(outcome.diagnostics.items(), outcome.alarm);
       if (report) report->finish(summary, outcome.diagnostics, completion, end_position, &events, span);
+      if (trace) report::mark_incomplete(trace.get(), completion);
       const bool stdout_taken = json_path == "-" || o->trace_file == "-";
       std::FILE* text_out = stdout_taken ? stderr : stdout;
       print_summary(text_out, *o, profile, summary, completion, report::untimed_cycles(outcome.diagnostics.items()));

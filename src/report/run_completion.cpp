@@ -27,6 +27,12 @@ std::string incomplete_note(const RunCompletion& c) {
          "; the figures cover the blocks before it";
 }
 
+void mark_incomplete(std::FILE* out, const RunCompletion& completion) {
+  if (completion.complete || !out) return;
+  std::fprintf(out, "# INCOMPLETE: %s\n", incomplete_note(completion).c_str());
+  std::fflush(out);
+}
+
 std::vector<std::string> untimed_cycles(const std::vector<Alarm>& diagnostics) {
   std::vector<std::string> names;
   for (const Alarm& a : diagnostics) {

@@ -3,6 +3,7 @@
 // stops at the first alarm, so every figure of a stopped run (time, path length, feeds, dips)
 // covers only the blocks before that alarm; every report that prints figures says so.
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ RunCompletion run_completion(const std::vector<Alarm>& diagnostics, bool ended_i
 // "stopped by alarm 14040 at PART.MPF:9; the figures cover the blocks before it" (file name
 // without folders), for text summaries and tables.
 std::string incomplete_note(const RunCompletion& completion);
+
+// A stopped run's CSV or listing (run --trace, path, path --elements) ends with one line
+// "# INCOMPLETE: <incomplete_note>" so a file read later says it covers only part of the program
+// (CSV readers skip it as a comment: pandas comment='#', gnuplot). Nothing for a complete run.
+void mark_incomplete(std::FILE* out, const RunCompletion& completion);
 
 // The standard cycles the run called that drycut does not simulate (warning 62900 "... not
 // simulated, no time counted": turning, contour and measuring cycles), by name, each once: the

@@ -54,6 +54,35 @@ TEST(IncompleteRun, TextSummarySaysWhereItStopped) {
   EXPECT_EQ(clean.out.find("INCOMPLETE"), std::string::npos) << clean.out;
 }
 
+TEST(IncompleteRun, CsvAndListingFilesEndWithTheMark) {
+  // run --trace, path (CSV) and path --elements of the stopped program keep what they wrote and
+  // end with one comment line naming the alarm; the complete program's files have none.
+  TempDir dir("drycut_incomplete_csv");
+  write_file(dir.path / "STOPS.MPF", kStops);
+  write_file(dir.path / "THROUGH.MPF", kRunsThrough);
+  const std::string mark = "# INCOMPLETE: stopped by alarm 14040 at STOPS.MPF:4; the figures cover the blocks before it\n";
+  for (const char* name : {"STOPS.MPF", "THROUGH.MPF"}) {
+    const bool stops = std::string(name) == "STOPS.MPF";
+    const auto trace = dir.path / (std::string(name) + ".trace.csv");
+    EXPECT_EQ(run_drycut("run -q --trace " + quoted(trace) + " " + quoted(dir.path / name)).exit_code, stops ? 1 : 0);
+    const auto csv = dir.path / (std::string(name) + ".path.csv");
+    run_drycut("path --csv " + quoted(csv) + " " + quoted(dir.path / name));
+    const CliRun listing = run_drycut("path --elements " + quoted(dir.path / name));
+    for (const std::string& text : {read_file(trace), read_file(csv), listing.out}) {
+      const size_t at = text.rfind("# INCOMPLETE");
+      if (!stops) {
+        EXPECT_EQ(at, std::string::npos) << text;
+        continue;
+      }
+      ASSERT_NE(at, std::string::npos) << text;
+      EXPECT_EQ(text.substr(at), mark);  // the last line
+      // The rows of N30, the block before the alarm, are kept.
+      EXPECT_TRUE(text.find("STOPS.MPF,3\n") != std::string::npos || text.find("STOPS.MPF:3\n") != std::string::npos)
+          << text;
+    }
+  }
+}
+
 TEST(IncompleteRun, JsonSummaryHasCompleteAndStoppedAt) {
   TempDir dir("drycut_incomplete_json");
   write_file(dir.path / "STOPS.MPF", kStops);
