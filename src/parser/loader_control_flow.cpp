@@ -337,6 +337,8 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       f.reader.seek(f.start);
       while (scan_line() && position_.line <= from.line)
         if (matches()) found = position_;
+      position_ = from;  // the search read on past the jump: an alarm of the jump names its block
+      text_ = from_text;
     }
     if (found) {
       // Structures that start at or after the target are left (and entered again later).
