@@ -52,6 +52,7 @@ machine::MachineProfile load_machine(const ProgramOptions& options) {
   machine::MachineProfile profile;
   try {
     profile = options.machine_file.empty() ? machine::default_profile() : machine::load_profile_file(options.machine_file);
+    interp::reset_state(profile);  // a reset code drycut does not know is the profile's error
   } catch (const machine::ProfileError& e) {
     throw UsageError(options.machine_file + ": " + e.what());
   }

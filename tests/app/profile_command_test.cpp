@@ -65,5 +65,24 @@ TEST(ProfileCommand, ShowTheEmbeddedProfileAndErrors) {
   EXPECT_EQ(run_shell(drycut_command("profile show /nonexistent.json 2>/dev/null")).exit_code, 2);
 }
 
+TEST(ProfileCommand, UnknownResetCodeIsAProfileErrorNotAnInternalOne) {
+  // A reset code drycut does not know (reset_gcodes, the MD20150 analogue) is the profile's
+  // fault: a usage error naming the file and the code, exit 2, not "internal error".
+  const fs::path dir = fresh_folder();
+  std::ifstream in(DRYCUT_SOURCE_DIR "/src/machine/profiles/mcv1210.json");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t at = text.find("\"reset_gcodes\": [");
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + std::string("\"reset_gcodes\": [").size(), "\"G999\", ");
+  std::ofstream(dir / "bad.json") << text;
+  std::ofstream(dir / "P.MPF") << "G1 X1 F100\nM30\n";
+  const CliRun r = run_shell(drycut_command("run -q --machine '" + (dir / "bad.json").string() + "' '" +
+                                            (dir / "P.MPF").string() + "' 2>&1"));
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("bad.json: reset_gcodes: 'G999' is not a modal code drycut knows"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("internal error"), std::string::npos) << r.out;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace drycut::testing
