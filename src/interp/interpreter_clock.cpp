@@ -16,7 +16,7 @@ namespace {
 
 // Rest-to-rest time over a distance d at velocity v, acceleration a and jerk j (j <= 0: none):
 // each ramp from 0 to a speed u takes u/a + a/j (with a constant-acceleration phase, u·j >= a²)
-// or 2·sqrt(u/j) (jerk only) and covers u/2 per second of it, so up and down cover u·ramp(u).
+// or 2·sqrt(u/j) (jerk only) at an average speed u/2, so up and down cover u·ramp(u).
 // Long enough: d/v + ramp(v). Else the peak u solves d = u·ramp(u): u = cbrt(d²·j/4) jerk only,
 // or u²/a + u·a/j = d with the acceleration phase; the time is 2·ramp(u).
 double rest_to_rest_s(double d, double v, double a, double j) {
