@@ -335,6 +335,9 @@ class Interpreter {
   // RND/CHF/CHR (and FRC) written in that block: the corner where the two lines meet.
   CornerWords held_corner_;
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)
+  // A lower bound of the planned time so far (rapid moves at their top speed, no ramps): whether
+  // a spindle run-up may still be going on (interpreter_spindle_run_up.cpp).
+  double least_time_s_ = 0.0;
   double cutting_time_s_ = 0.0;  // the part of it at feed with a tool active
   double clock_wait_s_ = 0.0;    // clock polls not yet emitted as a dwell (poll_clock)
   double waited_s_ = 0.0;               // clock waits emitted so far (part of nominal_time_s_)
@@ -367,6 +370,7 @@ class Interpreter {
   };
   struct SpindleRunUp {
     double since_s = 0.0;  // the nominal clock at the change
+    double since_least_s = 0.0;  // least_time_s_ then
     double from_rpm = 0.0;
     double to_rpm = 0.0;
     bool pending = false;  // no path block with feed has started since
@@ -381,11 +385,15 @@ class Interpreter {
   uint32_t run_up_count_ = 0;
   uint32_t run_up_mark_ = 0;  // a ramp began: the next element emitted carries its id
   void note_spindle_change();
+  SpindleRunUp standing_run_up() const;  // a spindle standing since now
   SpindleRunUp next_run_up(const SpindleCommand& old, const SpindleRunUp& ramp, double set_rpm) const;
   void become_master_run_up(const SpindleCommand& command, const SpindleRunUp& ramp);
   void note_tool_change_stops_spindle();
   void wait_for_spindle_speed(const PathElement& next);
-  double rapid_time_s(const PathElement& e, double length) const;
+  struct RapidLimits {
+    double v = 0, a = 0, j = 0;  // path velocity, acceleration, jerk (0: BRISK) of a G0 line
+  };
+  RapidLimits rapid_limits(const PathElement& e, double length) const;
   double g96_set_speed(const Eigen::Vector3d& machine_position, double cutting_speed_mm_min) const;
   Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;

@@ -340,7 +340,8 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   }
   constexpr double kTurn = 360.0;
   const auto other = other_spindles_.find(number);
-  const double rpm = master ? state_.spindle_rpm : other != other_spindles_.end() ? other->second.rpm : 0.0;
+  // The master's actual speed (under G96 the one at the tool's diameter, not the S of m/min).
+  const double rpm = master ? std::abs(actual_spindle_speed(0)) : other != other_spindles_.end() ? other->second.rpm : 0.0;
   const bool turning = rpm > 0 && (master ? state_.spindle != SpindleState::Stopped
                                           : other != other_spindles_.end() && other->second.turning());
   PositioningMove m;
@@ -376,6 +377,7 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     master_braking_ = {};
     spindle_angle_ = wrap_modulo(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value, kTurn);
     state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
+    run_up_ = standing_run_up();              // a later M3/M4 ramps from standstill
   } else {
     other_spindles_[number].state = SpindleState::Stopped;
   }

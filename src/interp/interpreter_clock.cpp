@@ -60,10 +60,12 @@ void Interpreter::add_nominal_time(const PathElement& e) {
   // interpreter, and for the spindle run-up that G0 moves overlap.
   if (e.kind == ElementKind::Dwell) {
     nominal_time_s_ += e.dwell_s;
+    if (e.run_up_wait == 0) least_time_s_ += e.dwell_s;  // (a run-up wait may come out shorter)
     return;
   }
   if (e.kind == ElementKind::ToolChange) {
     nominal_time_s_ += profile_.tool_change_time_s;
+    least_time_s_ += profile_.tool_change_time_s;
     return;
   }
   if (!e.is_motion() || !e.curve) return;
@@ -71,18 +73,23 @@ void Interpreter::add_nominal_time(const PathElement& e) {
   if (!e.rapid) {
     if (e.feed_mm_s <= 0) return;
     nominal_time_s_ += length / e.feed_mm_s;
+    least_time_s_ += length / e.feed_mm_s;
     if (tools_.has_tool()) cutting_time_s_ += length / e.feed_mm_s;  // a tool active (not T0): cutting
     return;
   }
-  nominal_time_s_ += rapid_time_s(e, length);
+  // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest; a
+  // blended chain takes less, never less than at its top speed throughout).
+  const RapidLimits l = rapid_limits(e, length);
+  if (!(l.v > 0) || !std::isfinite(l.v)) return;
+  nominal_time_s_ += l.a > 0 && std::isfinite(l.a) ? rest_to_rest_s(length, l.v, l.a, l.j) : length / l.v;
+  least_time_s_ += length / l.v;
 }
 
-double Interpreter::rapid_time_s(const PathElement& e, double length) const {
-  // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest) along
-  // its chord u: each axis i bounds the path to v_i/|u_i|, a_i/|u_i| (and under SOFT j_i/|u_i|
-  // besides the path jerk), with the G0 factors, the dynamic group and ACC/VELOLIM/JERKLIM, as
-  // the planner's element limits (motion/element_dynamics.cpp) take them.
-  if (length <= 0) return 0.0;
+Interpreter::RapidLimits Interpreter::rapid_limits(const PathElement& e, double length) const {
+  // Along the move's chord u each axis i bounds the path to v_i/|u_i|, a_i/|u_i| (and under SOFT
+  // j_i/|u_i| besides the path jerk), with the G0 factors, the dynamic group and
+  // ACC/VELOLIM/JERKLIM, as the planner's element limits (motion/element_dynamics.cpp) take them.
+  if (length <= 0) return {};
   const Eigen::Vector3d u = (e.curve->end() - e.curve->start()) / length;
   const machine::DynamicGroupFactors& group = profile_.dynamic_groups[static_cast<size_t>(e.dynamics.group)];
   const bool soft = e.dynamics.profile == AccelProfile::Soft;
@@ -96,9 +103,7 @@ double Interpreter::rapid_time_s(const PathElement& e, double length) const {
     a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * e.dynamics.limits.accel[i] * profile_.g0_accel_factor / t);
     if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * e.dynamics.limits.jerk[i] * profile_.g0_jerk_factor / t);
   }
-  if (!std::isfinite(v) || v <= 0) return 0.0;
-  if (!std::isfinite(a) || a <= 0) return length / v;
-  return rest_to_rest_s(length, v, a, j);
+  return {v, a, j};
 }
 
 }  // namespace drycut::interp

@@ -140,7 +140,11 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
   }
   if (n == master_spindle_) return;
   // Each spindle keeps its own run-up: the new master brings the ramp it is on (or came to).
-  other_spindles_[master_spindle_] = OtherSpindle{state_.spindle_rpm, state_.spindle, spindle_command_, run_up_};
+  // Under G96 the former master keeps the speed it turns at, and S stays the cutting speed, which
+  // the new master takes on (Function Manual V1, "Master spindle switchover with G96").
+  const bool g96 = state_.constant_cutting_speed;
+  const double leaving_rpm = g96 ? std::abs(actual_spindle_speed(0)) : state_.spindle_rpm;
+  other_spindles_[master_spindle_] = OtherSpindle{leaving_rpm, state_.spindle, spindle_command_, run_up_};
   const auto it = other_spindles_.find(n);
   OtherSpindle next;
   if (it == other_spindles_.end()) {
@@ -149,7 +153,7 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
     next = it->second;
     other_spindles_.erase(it);
   }
-  state_.spindle_rpm = next.rpm;
+  if (!g96) state_.spindle_rpm = next.rpm;
   state_.spindle = next.state;
   master_spindle_ = n;
   become_master_run_up(next.command, next.run_up);

@@ -38,11 +38,17 @@ Interpreter::SpindleRunUp Interpreter::next_run_up(const SpindleCommand& old, co
     const double reached = std::min(std::abs(rise), accel_rpm_s * (nominal_time_s_ - ramp.since_s));
     speed = ramp.from_rpm + std::copysign(reached, rise);
   }
-  SpindleRunUp next;
-  next.since_s = nominal_time_s_;
+  SpindleRunUp next = standing_run_up();
   next.from_rpm = speed;
   next.to_rpm = set_rpm;
   return next;
+}
+
+Interpreter::SpindleRunUp Interpreter::standing_run_up() const {
+  SpindleRunUp r;
+  r.since_s = nominal_time_s_;
+  r.since_least_s = least_time_s_;
+  return r;
 }
 
 void Interpreter::note_spindle_change() {
@@ -90,12 +96,16 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   const double tolerance = profile_.spindle_des_velo_tol * std::abs(run_up_.to_rpm);
   const double ramp_s = std::max(0.0, std::abs(run_up_.to_rpm - run_up_.from_rpm) - tolerance) /
                         (profile_.spindle_speedctrl_accel_rev_s2 * 60.0);
-  const double wait_s = ramp_s - (nominal_time_s_ - run_up_.since_s);
-  if (wait_s <= 1e-9) return;
+  // A ramp the planner times (marked) may still be going on unless even the least time of the
+  // moves since covers it (a blended G0 chain is quicker than the estimate's moves from rest to
+  // rest); the planner's wait may then come out 0. A ramp SETMS brought back has only the estimate.
+  const double estimate_s = ramp_s - (nominal_time_s_ - run_up_.since_s);
+  const double longest_s = ramp_s - (least_time_s_ - run_up_.since_least_s);
+  if ((run_up_.id != 0 ? longest_s : estimate_s) <= 1e-9) return;
   PathElement e;
   e.kind = ElementKind::Dwell;
   e.source = next.source;
-  e.dwell_s = wait_s;
+  e.dwell_s = std::max(0.0, estimate_s);
   if (run_up_.id != 0) {
     e.run_up_wait = run_up_.id;
     e.run_up_s = ramp_s;
@@ -109,7 +119,7 @@ void Interpreter::note_tool_change_stops_spindle() {
   // spindle for the changer: the next programmed speed, even the same S M3 again, ramps from
   // standstill after it. A turret's T (MD22550 = 0, a lathe) leaves the work spindle turning.
   if (!tools_.change_on_m_code()) return;
-  run_up_ = SpindleRunUp{nominal_time_s_, 0.0, 0.0, false, false, 0};
+  run_up_ = standing_run_up();
   spindle_command_ = SpindleCommand{SpindleState::Stopped, 0.0, false, master_spindle_};
 }
 
