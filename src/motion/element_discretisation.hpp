@@ -103,8 +103,7 @@ struct LocalLimits {
 };
 
 // The limits at a point. Only these 32 bytes come back: the discretiser builds each station
-// itself, and a worst point's limits need no station (a 200-byte Station built, returned
-// through the std::function and copied cost ~170 instructions per call on spline spans).
+// itself (its curve point in place), and a worst point's limits need no station at all.
 using PointLimits = std::function<LocalLimits(const CurvePoint& point)>;
 
 // Fills `out` with the stations of a curved element of length `length`, the start (s = 0)
