@@ -17,6 +17,16 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxDepth = 24;
 
+// The station at arc length s of the curve, with the limits of its point.
+// (The curve's point is built in the station: no copy of it.)
+Station station_at(const geometry::Curve& curve, double s, const PointLimits& limits_at) {
+  Station st{s, curve.at(s), {}, {}, {}, {}};
+  const LocalLimits limits = limits_at(st.point);
+  st.bound = limits.bound;
+  st.ramp = limits.ramp;
+  return st;
+}
+
 // Angles β + k·period (k integer) strictly inside the sweep, as arc lengths.
 void add_periodic(double beta, double period, double phi0, double sweep, double speed, std::vector<double>& out) {
   const double lo = std::min(phi0, phi0 + sweep), hi = std::max(phi0, phi0 + sweep);
@@ -87,7 +97,7 @@ double accel_tolerance(const DiscretisationRule& rule, const Station& a, const S
 // Step 2 of the rule: the piece [a, b] with worst case w keeps its limits within tolerance
 // (the velocity bound: unless `bound_checked`, which step 6 of sampled pieces has shown).
 bool piece_acceptable(const DiscretisationRule& rule, double length, const Station& a, const Station& b,
-                      const Station& w, bool bound_checked = false) {
+                      const LocalLimits& w, bool bound_checked = false) {
   if (!bound_checked && !close_to(w.bound.velocity, a.bound.velocity, b.bound.velocity, rule.bound_tolerance))
     return false;
   if (!ramp_matters(length, a, b)) return true;
@@ -114,11 +124,7 @@ struct ArcRefiner {
     }
   }
 
-  Station station(double s) const {
-    Station st = limits_at(arc.at(s));
-    st.s = s;
-    return st;
-  }
+  Station station(double s) const { return station_at(arc, s, limits_at); }
 
   double angle(double s) const { return arc.start_angle() + (arc.sweep() > 0 ? s : -s) * std::abs(arc.sweep()) / length; }
 
@@ -151,13 +157,13 @@ struct ArcRefiner {
     return w;
   }
 
-  bool acceptable(const Station& a, const Station& b, const Station& w) const {
+  bool acceptable(const Station& a, const Station& b, const LocalLimits& w) const {
     return piece_acceptable(rule, length, a, b, w);
   }
 
   // Appends the stations after `a` up to and including `b`.
   void refine(const Station& a, Station b, int depth) {
-    const Station w = limits_at(worst_point(a, b));
+    const LocalLimits w = limits_at(worst_point(a, b));
     const int budget = rule.max_segments - static_cast<int>(out.size());
     const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
     if (!can_split || acceptable(a, b, w)) {
@@ -201,11 +207,7 @@ struct SampledRefiner {
   const PointLimits& limits_at;
   std::vector<Station>& out;
 
-  Station station(double s) const {
-    Station st = limits_at(curve.at(s));
-    st.s = s;
-    return st;
-  }
+  Station station(double s) const { return station_at(curve, s, limits_at); }
 
   // The tangent turns by at most max_sampled_turn from a to m and from m to b: the per-axis
   // components then behave like cos/sin over a small angle, and an extreme between the samples
@@ -234,7 +236,7 @@ struct SampledRefiner {
   // minimum between samples would hide next to a sampled one), and a ramp from the worst of
   // them (the ends' better ramp limits; an upper bound of its reach) gains at most
   // sampled_reach_tolerance over the piece: the planner could not follow the variation.
-  bool ramp_bound(const Station& a, const Station& m, const Station& b, const Station& w, double beyond_a,
+  bool ramp_bound(const Station& a, const Station& m, const Station& b, const LocalLimits& w, double beyond_a,
                   double beyond_b) const {
     const double va = a.bound.velocity, vm = m.bound.velocity, vb = b.bound.velocity, v = w.bound.velocity;
     if (!((va <= vm && vm <= vb) || (va >= vm && vm >= vb)) || !std::isfinite(v) || !(v > 0.0)) return false;
@@ -243,7 +245,7 @@ struct SampledRefiner {
     return reach_upper_bound(v, b.s - a.s, best) <= v * (1.0 + rule.sampled_reach_tolerance);
   }
 
-  bool acceptable(const Station& a, const Station& m, const Station& b, const Station& w, double beyond_a,
+  bool acceptable(const Station& a, const Station& m, const Station& b, const LocalLimits& w, double beyond_a,
                   double beyond_b) const {
     if (!turns_little(a, m, b)) return false;
     return piece_acceptable(rule, length, a, b, w) ||
@@ -254,7 +256,7 @@ struct SampledRefiner {
   // -infinity at the element's ends, which are nodes of their own.
   void refine(const Station& a, Station b, int depth, double beyond_a, double beyond_b) {
     Station m = station(0.5 * (a.s + b.s));
-    const Station w = limits_at(worst_point(a, m, b));
+    const LocalLimits w = limits_at(worst_point(a, m, b));
     const int budget = rule.max_segments - static_cast<int>(out.size());
     const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
     if (!can_split || acceptable(a, m, b, w, beyond_a, beyond_b)) {
@@ -276,11 +278,7 @@ bool discretise_element(const geometry::Curve& curve, double length, double fine
                         const DiscretisationRule& rule, const PointLimits& limits_at,
                         std::vector<Station>& out) {
   out.clear();
-  auto station = [&](double s) {
-    Station st = limits_at(curve.at(s));
-    st.s = s;
-    return st;
-  };
+  auto station = [&](double s) { return station_at(curve, s, limits_at); };
   out.push_back(station(0.0));
   // ArcCurve is final, so comparing the dynamic type is the dynamic_cast's answer; a failing
   // __dynamic_cast walked the class hierarchy (~180 instructions per spline span).

@@ -96,8 +96,15 @@ struct DiscretisationRule {
   int max_segments = 20000;
 };
 
-// The limits at a point (the returned station's s is set by the caller).
-using PointLimits = std::function<Station(const CurvePoint& point)>;
+// The limits that hold at one point (a station's bound and ramp).
+struct LocalLimits {
+  VelocityBound bound;
+  RampLimits ramp;
+};
+
+// The limits at a point. Only these 32 bytes come back: the discretiser builds each station
+// itself (its curve point in place), and a worst point's limits need no station at all.
+using PointLimits = std::function<LocalLimits(const CurvePoint& point)>;
 
 // Fills `out` with the stations of a curved element of length `length`, the start (s = 0)
 // first and the end (s = length) last. `limits_at` gives the limits at a point;

@@ -205,8 +205,9 @@ void rounding_stations(const geometry::PolynomialSpan& span, double length, cons
   for (int k = 0; k <= 8; ++k) {
     const double u = u_end * k / 8.0;
     if (k > 0) s = k == 8 ? length : s + span.arc_length_between(u_end * (k - 1) / 8.0, u);
-    Station st = limits_at(geometry::PolynomialSpan::by_arc_length(span.derivatives(u)));
-    st.s = s;
+    const CurvePoint point = geometry::PolynomialSpan::by_arc_length(span.derivatives(u));
+    const LocalLimits limits = limits_at(point);
+    Station st{s, point, limits.bound, limits.ramp, {}, {}};
     if (k > 0) {
       const Station& prev = out.back();
       st.piece_bound = prev.bound.velocity <= st.bound.velocity ? prev.bound : st.bound;
@@ -225,7 +226,10 @@ bool Planner::discretise(const WindowElement& w, double length, double& grid) {
   const ElementDynamics& dyn = w.dynamics;
   auto bound_at = [&](const CurvePoint& p) {
     VelocityBound b;
-    for (const auto& c : point_constraints_) b.tighten(c->max_velocity(dyn, p), c->limit());
+    for (const auto& c : point_constraints_) {
+      const double v = c->max_velocity(dyn, p);
+      if (v < b.velocity) b.tighten(v, c->limit());  // the limit's name only when it binds
+    }
     if (dyn.rapid && b.limit == Limit::Feed) b.limit = Limit::Axis;
     return b;
   };
@@ -244,13 +248,7 @@ bool Planner::discretise(const WindowElement& w, double length, double& grid) {
     stations[1].piece_bound = stations[0].bound;
     stations[1].piece_ramp = stations[0].ramp;
   } else {
-    auto limits_at = [&](const CurvePoint& p) {
-      Station st;
-      st.point = p;
-      st.bound = bound_at(p);
-      st.ramp = tangential_limits(dyn, p);
-      return st;
-    };
+    auto limits_at = [&](const CurvePoint& p) { return LocalLimits{bound_at(p), tangential_limits(dyn, p)}; };
     const double v_ref = dyn.rapid ? dyn.axis_velocity.minCoeff() : dyn.feed;
     const double fine_step = std::clamp(v_ref * profile_.ipo_cycle_s, 0.01, 0.5);
     // A corner-smoothing rounding is curved inside and its curvature changes fast: one up to

@@ -22,12 +22,11 @@ struct PointLimitsOf {
   ElementDynamics dyn;
   std::shared_ptr<std::vector<std::unique_ptr<PointConstraint>>> constraints =
       std::make_shared<std::vector<std::unique_ptr<PointConstraint>>>(default_point_constraints());
-  Station operator()(const CurvePoint& p) const {
-    Station st;
-    st.point = p;
-    for (const auto& c : *constraints) st.bound.tighten(c->max_velocity(dyn, p), c->limit());
-    st.ramp = tangential_limits(dyn, p);
-    return st;
+  LocalLimits operator()(const CurvePoint& p) const {
+    LocalLimits limits;
+    for (const auto& c : *constraints) limits.bound.tighten(c->max_velocity(dyn, p), c->limit());
+    limits.ramp = tangential_limits(dyn, p);
+    return limits;
   }
 };
 
@@ -65,7 +64,7 @@ TEST(ArcDiscretisation, WorstCaseOfTheSweepEqualsTheMinimumOfDenseSamples) {
     double v_min = INFINITY, a_min = INFINITY, j_min = INFINITY;
     const int n = 20000;
     for (int k = 0; k <= n; ++k) {
-      const Station st = limits(arc->at(arc->length() * k / n));
+      const LocalLimits st = limits(arc->at(arc->length() * k / n));
       v_min = std::min(v_min, st.bound.velocity);
       a_min = std::min(a_min, st.ramp.accel);
       j_min = std::min(j_min, st.ramp.jerk);

@@ -43,12 +43,11 @@ class DipCurve : public geometry::Curve {
 };
 
 struct DipLimits {
-  Station operator()(const CurvePoint& p) const {
-    Station st;
-    st.point = p;
-    st.bound.velocity = std::min(kFeed, std::cbrt(kJerk / std::abs(p.curvature_rate.x())));
-    st.ramp = kRamp;
-    return st;
+  LocalLimits operator()(const CurvePoint& p) const {
+    LocalLimits limits;
+    limits.bound.velocity = std::min(kFeed, std::cbrt(kJerk / std::abs(p.curvature_rate.x())));
+    limits.ramp = kRamp;
+    return limits;
   }
 };
 
