@@ -24,14 +24,21 @@
 
 namespace drycut::interp {
 
+namespace {
+
+double with_direction(SpindleState state, double rpm) {  // M4 turns negative
+  return state == SpindleState::CounterClockwise ? -rpm : rpm;
+}
+
+}  // namespace
+
 Interpreter::SpindleRunUp Interpreter::next_run_up(const SpindleCommand& old, const SpindleRunUp& ramp,
                                                    double set_rpm) const {
   // Where the old ramp has come to: on its way at MD35200, or, under G96 after its first cut,
   // at the old set speed at the tool's diameter now.
   double speed;
   if (ramp.follows_set_speed && old.constant_cutting_speed && old.state != SpindleState::Stopped) {
-    speed = g96_set_speed(position_, old.value);
-    if (old.state == SpindleState::CounterClockwise) speed = -speed;
+    speed = with_direction(old.state, g96_set_speed(position_, old.value));
   } else {
     const double accel_rpm_s = profile_.spindle_speedctrl_accel_rev_s2 * 60.0;
     const double rise = ramp.to_rpm - ramp.from_rpm;
@@ -88,8 +95,8 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   if (state_.constant_cutting_speed && state_.spindle != SpindleState::Stopped && next.curve) {
     // G96: the set speed where the cut starts, not where G96 was programmed (a tool-change point
     // far out gives a low speed, the centre the LIMS speed).
-    const double rpm = g96_set_speed(next.curve->at(0.0).position, cutting_speed_mm_min(state_.spindle_rpm));
-    run_up_.to_rpm = state_.spindle == SpindleState::CounterClockwise ? -rpm : rpm;
+    run_up_.to_rpm = with_direction(state_.spindle, g96_set_speed(next.curve->at(0.0).position,
+                                                                  cutting_speed_mm_min(state_.spindle_rpm)));
     run_up_.follows_set_speed = true;
   }
   if (run_up_.to_rpm == 0.0) return;

@@ -78,19 +78,16 @@ void Planner::consume(interp::PathElement&& element) {
       append_passive(std::move(element));
       break;
     case interp::ElementKind::Dwell: {
-      flush();
-      note_run_up_start(element);
+      stop_path(element);
       account_pause(element, dwell_time(element));
       break;
     }
     case interp::ElementKind::ToolChange:
-      flush();
-      note_run_up_start(element);
+      stop_path(element);
       account_pause(element, profile_.tool_change_time_s);
       break;
     case interp::ElementKind::Stop: {
-      flush();
-      note_run_up_start(element);
+      stop_path(element);
       // The program ends when every positioning axis is in position too.
       const double ready = element.stop == interp::StopKind::ProgramEnd ? positioning_.wait({}) : 0.0;
       account_pause(element, std::max(0.0, ready - clock_s_));
@@ -101,13 +98,17 @@ void Planner::consume(interp::PathElement&& element) {
       append_positioning(std::move(element));
       break;
     case interp::ElementKind::AxisWait: {
-      flush();
-      note_run_up_start(element);
+      stop_path(element);
       const double ready = positioning_.wait(element.wait_axes);
       account_pause(element, std::max(0.0, ready - clock_s_));
       break;
     }
   }
+}
+
+void Planner::stop_path(const interp::PathElement& pause) {
+  flush();
+  note_run_up_start(pause);  // a pause that begins a spindle ramp begins it now
 }
 
 void Planner::note_run_up_start(const interp::PathElement& e) {

@@ -252,6 +252,7 @@ class Planner : public interp::ElementSink {
   uint32_t run_up_id_ = 0;
   double run_up_start_s_ = 0;
   void note_run_up_start(const interp::PathElement& e);
+  void stop_path(const interp::PathElement& pause);  // flush() before a pause element
   double dwell_time(const interp::PathElement& e) const;
   bool block_known_ = false;
   std::shared_ptr<const std::string> block_file_;

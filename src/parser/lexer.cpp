@@ -112,7 +112,7 @@ inline size_t lex_name(std::string_view s, size_t i, std::vector<Token>& out) {
     // "X12.345" and "X1EX2" (with its power of ten: 100, as "X1.0EX2"): the letter, then a
     // decimal number. EX followed by digits is read as the exponent, not as a call of a
     // program EX2 glued to the value.
-    if (i < n && (s[i] == '.' || scan_number(s, letters_end) > i)) {
+    if (i < n && (s[i] == '.' || (exponent_follows(s, i) && scan_number(s, letters_end) > i))) {
       push(out, s, TokenKind::Name, start, 1);
       return lex_number(s, letters_end, out);
     }
