@@ -32,6 +32,7 @@ Interpreter::Interpreter(const machine::MachineProfile& profile, ElementSink& si
       state_(reset_state(profile)),
       tools_(profile),
       position_(profile.start_position),
+      g96_speed_position_(profile.start_position),
       extra_axes_(profile),
       master_spindle_(profile.master_spindle) {
   for (int i = 0; i < kSettableFrames; ++i) {
@@ -505,8 +506,11 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   // coordinates; x the SCC axis, default the transverse axis of MD20100) over the block, limited
   // by LIMS, G26 and MD35100 above and G25 below (constant_cutting_speed.hpp).
   const double speed_mm_min = cutting_speed_mm_min(state_.spindle_rpm);
+  // Without a chord (G4 S, G97's frozen speed, a corner's feed) the speed the spindle has: the one
+  // set for the last cut's end, which a G0 since has not changed (Fundamentals, "Constant cutting
+  // rate": "G0 does not change the speed").
   const Frame& frame = block_frame(ctx);
-  const Eigen::Vector3d tip = position_ - length_applied_;
+  const Eigen::Vector3d tip = (chord ? position_ : g96_speed_position_) - length_applied_;
   const double x0 = frame.to_inner(tip)[state_.cutting_speed_axis];
   const double x1 = chord ? frame.to_inner(tip + *chord)[state_.cutting_speed_axis] : x0;
   const double max_rpm = g96_speed_ceiling();
@@ -583,6 +587,8 @@ void Interpreter::emit(PathElement&& element) {
     has_last_tangent_ = true;
   }
   if (element.is_motion() && element.curve) note_compensated_end(element);
+  if (state_.constant_cutting_speed && element.is_motion() && !element.rapid && element.curve)
+    g96_speed_position_ = element.curve->end();
   sink_.consume(std::move(element));
   spare_source_ = std::move(element.source);
   if (element.curve) spare_curve_ = std::move(element.curve);

@@ -321,6 +321,9 @@ class Interpreter {
   // first motion that programs that axis after a new length (W1: TLC with the first traversing
   // motion of the axis).
   Eigen::Vector3d length_applied_ = Eigen::Vector3d::Zero();
+  // Under G96 the position whose diameter the spindle speed was last set for: the end of the last
+  // cut (G0 leaves the speed as it is) or where the spindle command last changed.
+  Eigen::Vector3d g96_speed_position_;
   bool has_last_tangent_ = false;
   Eigen::Vector3d last_tangent_ = Eigen::Vector3d::UnitX();
   // The last motion was compensated (G41/G42): the carrier is this far off position_ at its end.

@@ -181,9 +181,9 @@ double Interpreter::actual_spindle_speed(int spindle) const {
     // The set speed within G26/G25 and MD35100, as spindle_speed() limits it.
     rpm = std::min(within_g25_g26(rpm), profile_.max_spindle_speed_rpm);
   } else if (master) {
-    // G96: S is the cutting speed; the spindle turns at what it gives at the tool's diameter
-    // now, as spindle_speed() plans it.
-    rpm = g96_set_speed(position_, cutting_speed_mm_min(rpm));
+    // G96: S is the cutting speed; the spindle turns at what it gives at the diameter it was
+    // last set for (the last cut's end: G0 does not change it), as spindle_speed() plans it.
+    rpm = g96_set_speed(g96_speed_position_, cutting_speed_mm_min(rpm));
   }
   return state == SpindleState::CounterClockwise ? -rpm : rpm;
 }

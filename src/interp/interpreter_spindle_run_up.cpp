@@ -7,8 +7,9 @@
 // new set speed (signed: M4 negative). After a change of the master's command the first path
 // block with feed waits until the master's actual speed is within MD35150 of the set speed; G0
 // blocks run meanwhile. Under G96 the set speed is the one at the start of that first cut, and
-// from then on the spindle follows the set speed along the diameter (G97 then freezes a speed
-// the spindle already has: no wait).
+// from then on the spindle follows the set speed along the diameter of each cut, while G0 leaves
+// it as it is (G97 then freezes the speed of the last cut's end, which the spindle already has:
+// no wait).
 //
 // Timing: the interpreter knows only its nominal clock (interpreter_clock.cpp), so it decides
 // whether a wait may be due (ramp time into the set range > nominal time since the change) and
@@ -38,7 +39,7 @@ Interpreter::SpindleRunUp Interpreter::next_run_up(const SpindleCommand& old, co
   // at the old set speed at the tool's diameter now.
   double speed;
   if (ramp.follows_set_speed && old.constant_cutting_speed && old.state != SpindleState::Stopped) {
-    speed = with_direction(old.state, g96_set_speed(position_, old.value));
+    speed = with_direction(old.state, g96_set_speed(g96_speed_position_, old.value));
   } else {
     const double accel_rpm_s = profile_.spindle_speedctrl_accel_rev_s2 * 60.0;
     const double rise = ramp.to_rpm - ramp.from_rpm;
@@ -63,7 +64,9 @@ void Interpreter::note_spindle_change() {
   const double value = state_.constant_cutting_speed ? cutting_speed_mm_min(state_.spindle_rpm) : state_.spindle_rpm;
   const SpindleCommand now{state_.spindle, value, state_.constant_cutting_speed, master_spindle_};
   if (now != spindle_command_) {
-    run_up_ = next_run_up(spindle_command_, run_up_, actual_spindle_speed(0));
+    run_up_ = next_run_up(spindle_command_, run_up_, 0.0);  // from the speed it has
+    g96_speed_position_ = position_;                        // a new G96 speed is set for here
+    run_up_.to_rpm = actual_spindle_speed(0);
     run_up_.pending = profile_.spindle_on_speed_at_ipo_start > 0;
     run_up_.id = ++run_up_count_;
     run_up_mark_ = run_up_.id;
