@@ -53,6 +53,12 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
                         where, block.text);
       continue;
     }
+    // The override a synchronized action would set (Function Manual Synchronized Actions, $AC_OVR
+    // path and $AA_OVR axis override, reset each IPO cycle): drycut plans at 100 %, as for OVR.
+    if ((w.name == "$AC_OVR" || w.name == "$AA_OVR") && warned_.insert(w.name).second) {
+      diagnostics_.warn(kNotModelled, w.name + " written (drycut plans at 100 % override)", where, block.text);
+      continue;
+    }
     // Any other frame ($P_BFRAME, $P_UBFR, $P_CHBFR[n], $P_SETFRAME ...: drycut has no basic or
     // system frames) or form (a component of $P_PFRAME): said once per name.
     if (!parser::is_frame_variable_name(w.name) || !warned_.insert(w.name).second) continue;
