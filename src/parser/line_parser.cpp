@@ -125,12 +125,12 @@ void LineParser::parse_head(ParsedLine& out) {
   }
 }
 
-void LineParser::parse_jump_target(ParsedLine& out) { parse_jump_target(out, out.target); }
+void LineParser::parse_jump_target(ParsedLine& out) { parse_jump_target(out, out.jump, out.target); }
 
-void LineParser::parse_jump_target(ParsedLine& out, JumpTarget& target) {
+void LineParser::parse_jump_target(ParsedLine& out, JumpDirection direction, JumpTarget& target) {
   const Token& t = peek();
   target.column = t.column;
-  if (out.jump == JumpDirection::ToStart) return;  // GOTOS takes no target
+  if (direction == JumpDirection::ToStart) return;  // GOTOS takes no target
   int64_t number = 0;
   const TokenKind after = peek(1).kind;
   const bool computed = after == TokenKind::Concat || after == TokenKind::Plus || after == TokenKind::LBracket;
@@ -168,7 +168,7 @@ bool LineParser::parse_case(ParsedLine& out) {
     if (peek().kind != TokenKind::Name || !jump_direction(peek().text, b.jump))
       throw LineError(12080, peek().column, "GOTOF/GOTOB/GOTO/GOTOC expected in CASE");
     ++pos_;
-    parse_jump_target(out, b.target);
+    parse_jump_target(out, b.jump, b.target);
     const bool is_default = b.value == kNoExpr;
     out.cases.push_back(b);
     if (is_default) break;
@@ -319,10 +319,7 @@ void LineParser::parse_if(ParsedLine& out) {
       if (!(peek().kind == TokenKind::Name && jump_direction(peek().text, b.jump)))
         throw LineError(12080, peek().column, "a jump (GOTOF, GOTOB ...) expected after the condition");
       ++pos_;
-      const JumpDirection first = out.jump;
-      out.jump = b.jump;  // parse_jump_target reads the direction from the line (GOTOS)
-      parse_jump_target(out, b.target);
-      out.jump = first;
+      parse_jump_target(out, b.jump, b.target);
       out.cases.push_back(b);
     }
   } else {

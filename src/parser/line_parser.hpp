@@ -51,7 +51,8 @@ class LineParser {
   void parse_item_arguments(ParsedLine& out, Item& item, std::span<ExprIndex> buffer, bool empty_items,
                             const char* too_many);
   void parse_jump_target(ParsedLine& out);
-  void parse_jump_target(ParsedLine& out, JumpTarget& target);
+  // A branch's own direction (CASE, a second IF ... GOTO in the block): out.jump is the line's.
+  void parse_jump_target(ParsedLine& out, JumpDirection direction, JumpTarget& target);
   void parse_type(DefEntry& e);
   void parse_dimensions(ParsedLine& out, DefEntry& e);
   void parse_initialiser(ParsedLine& out, DefEntry& e);
