@@ -96,6 +96,7 @@ void ProgramLoader::execute_control() {
   switch (s) {
     case Statement::If:
       if (eval(parsed_.condition) != 0.0) {
+        c.input_condition = system_variables_.input_reads() != input_reads_at_line_;
         push_control(c);
       } else if (skip_forward(true) == Statement::Else) {
         c.kind = Statement::If;
@@ -112,18 +113,20 @@ void ProgramLoader::execute_control() {
       stack.pop_back();
       return;
     case Statement::While:
-      if (eval(parsed_.condition) != 0.0)
+      if (eval(parsed_.condition) != 0.0) {
+        c.input_condition = system_variables_.input_reads() != input_reads_at_line_;
         push_control(c);
-      else
+      } else
         skip_forward(false);
       return;
     case Statement::EndWhile: {
       expect_top(Statement::While);
       const LinePosition head = stack.back().head;
+      const bool by_input = stack.back().input_condition;
       const LinePosition after = f.reader.tell();
       stack.pop_back();
       f.reader.seek(head);  // the WHILE line evaluates its condition again
-      if (check_endless_loop()) f.reader.seek(after);  // the awaited input came: the loop ends
+      if (check_endless_loop(by_input)) f.reader.seek(after);  // the awaited input came: the loop ends
       return;
     }
     case Statement::For:
@@ -140,7 +143,7 @@ void ProgramLoader::execute_control() {
     case Statement::Until:
       expect_top(Statement::Repeat);
       if (eval(parsed_.condition) == 0.0)
-        repeat_loop_body(f);
+        repeat_loop_body(f, system_variables_.input_reads() != input_reads_at_line_);
       else
         stack.pop_back();
       return;
@@ -194,10 +197,10 @@ void ProgramLoader::next_for_pass(Frame& f, uint32_t column) {
 
 // UNTIL (condition false) and ENDLOOP: back to the body of the innermost REPEAT / LOOP, unless
 // the endless-loop check finds the loop waiting for an input that came: then the loop ends.
-void ProgramLoader::repeat_loop_body(Frame& f) {
+void ProgramLoader::repeat_loop_body(Frame& f, bool decided_by_input) {
   const LinePosition after = f.reader.tell();
   f.reader.seek(f.control.back().body);
-  if (check_endless_loop()) {  // the awaited input came: the loop ends
+  if (check_endless_loop(decided_by_input)) {  // the awaited input came: the loop ends
     f.reader.seek(after);
     f.control.pop_back();
   }
@@ -341,6 +344,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       text_ = from_text;
     }
     if (found) {
+      const bool by_input = jump_decided_by_input();
       // Structures that start at or after the target are left (and entered again later).
       auto& stack = f.control;
       size_t kept = stack.size();
@@ -348,7 +352,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       std::vector<ControlFrame> left(stack.begin() + static_cast<std::ptrdiff_t>(kept), stack.end());
       stack.resize(kept);
       f.reader.seek(*found);
-      if (check_endless_loop()) {  // the awaited input came: the jump back is not taken
+      if (check_endless_loop(by_input)) {  // the awaited input came: the jump back is not taken
         stack.insert(stack.end(), left.begin(), left.end());
         f.reader.seek(after);
       }
@@ -519,7 +523,18 @@ void ProgramLoader::loop_state(std::string& out) const {
   put(macros_.size());
 }
 
-bool ProgramLoader::check_endless_loop() {
+bool ProgramLoader::jump_decided_by_input() const {
+  // IF ... GOTOB, UNTIL, CASE: the condition on this line. A GOTOB of its own inside an IF block
+  // (IF $A_IN[4]==0 / GOTOB W1 / ENDIF): that IF's condition.
+  if (system_variables_.input_reads() != input_reads_at_line_) return true;
+  if (parsed_.statement != Statement::Goto) return false;
+  const auto& stack = frames_.back()->control;
+  for (auto it = stack.rbegin(); it != stack.rend(); ++it)
+    if (it->kind == Statement::If) return it->input_condition;
+  return false;
+}
+
+bool ProgramLoader::check_endless_loop(bool decided_by_input) {
   // A big state (large arrays) is compared only every state-size/1 KiB lines, so that the guard
   // costs at most about 1 KiB of copying per line executed; states up to 1 KiB are compared at
   // every jump. Skipping visits never gives a false alarm, and a loop is still found: the visits
@@ -531,7 +546,9 @@ bool ProgramLoader::check_endless_loop() {
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
   loop_state(loop_state_);
   next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
-  switch (loop_guard_.repeats(site, loop_state_, system_variables_.view_reads(), system_variables_.input_reads())) {
+  const LoopGuard::Visit visit{system_variables_.view_reads(), system_variables_.input_reads(), motion_blocks_,
+                               decided_by_input};
+  switch (loop_guard_.repeats(site, loop_state_, visit)) {
     case LoopGuard::Repeat::No:
       return false;
     case LoopGuard::Repeat::Endless:
@@ -546,6 +563,8 @@ bool ProgramLoader::check_endless_loop() {
       const bool signal = classify_system_variable(what.substr(0, what.find('['))) == SystemVariableClass::InputOutput;
       warn(990014, "loop waits for " + what + (signal ? " (give it a value in the profile's machine_data to model the signal)" : ""),
            0);
+      // The signal came: a check after the wait (IF $A_IN[9]==0 SETAL(...)) sees it.
+      system_variables_.input_arrived(what);
     }
       return true;
   }

@@ -16,6 +16,7 @@ struct ProgramLoader::ControlFrame {
   LinePosition body;  // the line after it
   double end = 0.0;   // FOR: last value
   std::string variable;  // FOR: loop variable
+  bool input_condition = false;  // IF/WHILE: its condition read an input or PLC datum
 };
 
 // REPEAT start [end] P=n / REPEATB: lines from `start` up to (not including) `stop` are run

@@ -2,8 +2,7 @@
 
 namespace drycut::parser {
 
-LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, uint64_t reads,
-                                     uint64_t input_reads) {
+LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, const Visit& v) {
   constexpr size_t kMaxSites = 4096;  // bounded memory for programs with very many loops
   auto it = sites_.find(site);
   if (it == sites_.end()) {
@@ -13,12 +12,17 @@ LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, ui
   Record& r = it->second;
   // A wait on an input is a wait whatever else the stretch read: the input (or a synchronized
   // action's variable) is what ends it on the machine.
-  if (r.visits > 0 && r.state == state && r.input_reads != input_reads) return Repeat::WaitsOnInput;
-  if (r.visits > 0 && r.reads == reads && r.state == state) return Repeat::Endless;
+  if (r.visits > 0 && r.state == state && r.input_reads != v.input_reads) return Repeat::WaitsOnInput;
+  if (v.decided_by_input && r.visits > 0 && r.last_motion_blocks == v.motion_blocks &&
+      r.last_input_reads != v.input_reads)
+    return Repeat::WaitsOnInput;  // a wait with a timeout counter or clock beside the input
+  if (r.visits > 0 && r.reads == v.reads && r.state == state) return Repeat::Endless;
+  r.last_motion_blocks = v.motion_blocks;
+  r.last_input_reads = v.input_reads;
   if (++r.visits == r.next_save) {
     r.state = state;
-    r.reads = reads;
-    r.input_reads = input_reads;
+    r.reads = v.reads;
+    r.input_reads = v.input_reads;
     r.next_save *= 2;
   }
   return Repeat::No;

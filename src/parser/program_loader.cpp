@@ -113,6 +113,7 @@ std::vector<std::string> ProgramLoader::commands_used() const {
 
 void ProgramLoader::count_line() {
   system_variables_.begin_line();
+  input_reads_at_line_ = system_variables_.input_reads();
   if (++steps_ > options_.max_steps) {
     text_.clear();
     raise(990004, "more than " + std::to_string(options_.max_steps) + " lines executed", 0);
@@ -178,6 +179,7 @@ bool ProgramLoader::next(Block& out) {
     if (pending_line_ && !frames_.empty()) {
       if (take_pending_line() && execute_line(out)) {
         if (modal_call_) schedule_modal_call(out);
+        if (!out.axis_words.empty()) ++motion_blocks_;
         return true;
       }
       continue;
@@ -223,6 +225,7 @@ bool ProgramLoader::next(Block& out) {
     if (frames_.size() == 1) main_has_content_ = true;
     if (execute_line(out)) {
       if (modal_call_) schedule_modal_call(out);
+      if (!out.axis_words.empty()) ++motion_blocks_;
       return true;
     }
   }

@@ -159,7 +159,7 @@ class ProgramLoader {
   void execute_control();
   void start_for_loop(ControlFrame& c, uint32_t column);  // FOR
   void next_for_pass(Frame& f, uint32_t column);          // ENDFOR
-  void repeat_loop_body(Frame& f);                        // UNTIL (false), ENDLOOP
+  void repeat_loop_body(Frame& f, bool decided_by_input = false);  // UNTIL (false), ENDLOOP
   void execute_if_goto();
   void execute_case();
   void execute_repeat_section();
@@ -172,7 +172,9 @@ class ProgramLoader {
   // At every backward jump: alarm 990004 when the loader is back in a state it had here.
   // After a backward jump: raises 990004 when the loader is back in a state it had (an endless
   // loop); true when the repeating loop reads inputs (it waits for them: the caller leaves it).
-  bool check_endless_loop();
+  // `decided_by_input`: the condition that takes this jump back read an input (a wait on it).
+  bool check_endless_loop(bool decided_by_input = false);
+  bool jump_decided_by_input() const;  // this line's condition, or an enclosing IF's for GOTOB
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to_start();
@@ -236,6 +238,8 @@ class ProgramLoader {
   uint64_t blocks_executed_ = 0;
   uint64_t main_run_reads_seen_ = 0;  // system_variables_.main_run_reads() at the last block
   uint64_t steps_ = 0;
+  uint64_t motion_blocks_ = 0;         // blocks handed on with axis words (a loop that moves works)
+  uint64_t input_reads_at_line_ = 0;   // system_variables_.input_reads() when this line began
   bool main_has_content_ = false;
   std::bitset<1000> g_used_, m_used_;
   std::set<std::string, std::less<>> commands_used_;

@@ -87,6 +87,9 @@ class SystemVariables {
   // before it have run (an implicit STOPRE; Job Planning, "Preprocessing stop (STOPRE)").
   uint64_t main_run_reads() const { return main_run_reads_; }
   const std::string& last_input_read() const { return last_input_; }
+  // A wait on `key` ended (the loop guard took the signal as come): a digital input ($A_IN[n])
+  // reads its other value from now on. Other data (bytes, words) have no one awaited value.
+  void input_arrived(const std::string& key);
   // A value something outside the program may change was read (the operator at M0/M1, a
   // synchronized action): a loop that repeats after such a read waits, as on an input.
   void note_external_read(const std::string& what) const {
