@@ -1,6 +1,8 @@
 #include "interp/frame_components.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <vector>
 
@@ -114,6 +116,55 @@ std::string FrameComponents::assign_function(std::string_view d, double unit, in
     else mirror[static_cast<size_t>(axis)] = true;
   }
   return {};
+}
+
+std::optional<FrameComponents> FrameComponents::of_product(const Frame& frame) {
+  const Eigen::Matrix3d& l = frame.linear();
+  FrameComponents c;
+  c.translation = frame.offset();
+  Eigen::Matrix3d r = l;
+  for (int i = 0; i < 3; ++i) {
+    c.scale[i] = l.col(i).norm();
+    if (c.scale[i] <= 0) return std::nullopt;
+    r.col(i) /= c.scale[i];
+  }
+  if (r.determinant() < 0 || !(r.transpose() * r).isIdentity(1e-9)) return std::nullopt;
+  const double deg = 180.0 / 3.14159265358979323846;
+  c.rotation_deg = Eigen::Vector3d(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
+                                   std::atan2(r(1, 0), r(0, 0))) * deg;
+  return c;
+}
+
+std::string FrameComponents::text(double unit) const {
+  std::string out;
+  char buf[40];
+  const char* axes[] = {"X", "Y", "Z"};
+  auto function = [&](const char* name, const Eigen::Vector3d& v, double divisor) {
+    if (!out.empty()) out += ':';
+    out += name;
+    out += '(';
+    for (int i = 0; i < 3; ++i) {
+      std::snprintf(buf, sizeof buf, "%s%s,%.17g", i > 0 ? "," : "", axes[i], v[i] / divisor);
+      out += buf;
+    }
+    out += ')';
+  };
+  function("CTRANS", translation, unit);
+  if (fine != Eigen::Vector3d::Zero()) function("CFINE", fine, unit);
+  if (rotation_deg != Eigen::Vector3d::Zero()) function("CROT", rotation_deg, 1.0);
+  if (scale != Eigen::Vector3d::Ones()) function("CSCALE", scale, 1.0);
+  if (mirror[0] || mirror[1] || mirror[2]) {
+    out += ":CMIRROR(";
+    bool first = true;
+    for (int i = 0; i < 3; ++i)
+      if (mirror[static_cast<size_t>(i)]) {
+        out += first ? "" : ",";
+        out += axes[i];
+        first = false;
+      }
+    out += ')';
+  }
+  return out;
 }
 
 FrameComponents profile_frame_components(const machine::MachineProfile& profile, int index) {

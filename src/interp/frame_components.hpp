@@ -41,6 +41,12 @@ struct FrameComponents {
   std::string assign(std::string_view description, double unit);
   // A chain whose order the components cannot hold: the frame is known only as a product.
   bool composed() const { return composed_.has_value(); }
+  // The components of a frame known as a product, where it is translation · rotation · scale
+  // (no mirror, no shear): none else.
+  static std::optional<FrameComponents> of_product(const Frame& frame);
+  // The frame functions that make these components, lengths in `unit`:
+  // "CTRANS(X,..,Y,..,Z,..):CFINE(..):CROT(..):CSCALE(..):CMIRROR(..)" (assign reads it back).
+  std::string text(double unit) const;
 
  private:
   // One function "CROT(Z,30)"; rank: 0 translation, 1 rotation, 2 scale, 3 mirror.

@@ -95,4 +95,33 @@ std::optional<Value> InterpreterStateView::frame_variable(std::string_view n, st
   return std::nullopt;
 }
 
+std::optional<double> InterpreterStateView::frame_component(std::string_view text, std::string_view axis_name,
+                                                            std::string_view component) const {
+  // A FRAME variable's component (_FR[X,TR]): its text computed as a frame ($P_UIFR[n]=_FR would
+  // compute the same), the component as a $P_UIFR[n, X, TR] read gives it.
+  const double unit = interpreter_.state().inch ? 25.4 : 1.0;
+  const int axis = detail::axis_index(axis_name);
+  FrameComponents c;
+  if (axis < 0 || (!text.empty() && !c.assign(text, unit).empty())) return std::nullopt;
+  return c.composed() ? component_of_matrix(c.frame(), axis, component, unit) : component_of(c, axis, component, unit);
+}
+
+std::optional<std::string> InterpreterStateView::frame_with_component(std::string_view text, std::string_view axis_name,
+                                                                      std::string_view component, double value) const {
+  // _FR[X,TR]=v: the frame by its components (a product such as a whole $P_UIFR[n] read is split
+  // into translation, rotation and scale where it is one), the component set, back as text.
+  const double unit = interpreter_.state().inch ? 25.4 : 1.0;
+  const int axis = detail::axis_index(axis_name);
+  FrameComponents c;
+  if (axis < 0 || (!text.empty() && !c.assign(text, unit).empty())) return std::nullopt;
+  if (c.composed()) {
+    const std::optional<FrameComponents> split = FrameComponents::of_product(c.frame());
+    if (!split) return std::nullopt;
+    c = *split;
+  }
+  const bool length = component == "TR" || component == "FI";
+  if (!c.set(axis, component, length ? value * unit : value)) return std::nullopt;
+  return c.text(unit);
+}
+
 }  // namespace drycut::interp

@@ -105,8 +105,11 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
       return Value::of_text(std::string(1, text[character_position(text, indices[0], column)]));
     }
     if (v->type() == DataType::Frame && v->rank() == 0 && indices.size() == 2) {
-      // A component of a FRAME variable (_FR[X,TR]): valid, but the loader keeps frames as the
-      // text of their functions and computes no components (docs/controller-state.md, Frames).
+      // A component of a FRAME variable (_FR[X,TR]): the loader keeps frames as the text of
+      // their functions; the interpreter computes the component (docs/controller-state.md, Frames).
+      if (l.state_view_)
+        if (const auto c = l.state_view_->frame_component(v->get(0).text, indices[0].text, indices[1].text))
+          return Value(*c);
       l.warn(990007, std::string(name) + "[axis, component] of a FRAME variable is not computed: 0 assumed", column);
       return Value(0.0);
     }
@@ -302,6 +305,21 @@ void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t 
     // 0 truncates the string there).
     if (text[at] == '\0') text.resize(at);
     v.set(e, Value::of_text(text), column);
+    return;
+  }
+  if (v.type() == DataType::Frame && v.rank() == 0 && index_count == 2) {
+    // _FR[X,TR]=v: the frame with that component set (Job Planning, "Frame components").
+    const std::optional<std::string> text =
+        state_view_ ? state_view_->frame_with_component(v.get(0).text, idx[0].text, idx[1].text,
+                                                        as_number(eval_value(value), column))
+                    : std::nullopt;
+    if (!text) {
+      warn(990007, v.name() + "[axis, component] of a FRAME variable not written (drycut cannot split this frame)", column);
+      return;
+    }
+    Value frame = Value::of_frame();
+    frame.text = *text;
+    v.set(0, frame, column);
     return;
   }
   const size_t e = v.element(std::span<const Value>(idx, index_count), column);

@@ -82,7 +82,10 @@ class ProgramLoader {
   // Throws UsageError when the file cannot be read.
   void open_main(const std::filesystem::path& path);
   // The interpreter's programmed state answers $P_/$AA_/$TC_ reads (in `run`).
-  void set_state_view(const ControllerStateView* view) { system_variables_.set_view(view); }
+  void set_state_view(const ControllerStateView* view) {
+    system_variables_.set_view(view);
+    state_view_ = view;
+  }
   // Fills `out` with the next executed block; false at program end. Throws AlarmError.
   bool next(Block& out);
 
@@ -238,6 +241,7 @@ class ProgramLoader {
   uint64_t blocks_executed_ = 0;
   uint64_t main_run_reads_seen_ = 0;  // system_variables_.main_run_reads() at the last block
   uint64_t steps_ = 0;
+  const ControllerStateView* state_view_ = nullptr;  // frames of FRAME variables (components)
   uint64_t motion_blocks_ = 0;         // blocks handed on with axis words (a loop that moves works)
   uint64_t input_reads_at_line_ = 0;   // system_variables_.input_reads() when this line began
   bool main_has_content_ = false;

@@ -53,6 +53,17 @@ class ControllerStateView {
   virtual double poll_clock(uint64_t /*line*/) const { return elapsed_s(); }
   // Seconds of motion at feed with a tool active so far ($AC_CUTTING_TIME, tool action time).
   virtual double cutting_time_s() const { return 0.0; }
+  // A component [axis, TR|FI|RT|SC|MI] of a FRAME value (its text, "CTRANS(X,10)"; empty: the
+  // null frame), and the text of that frame with the component set: the loader keeps FRAME
+  // variables as text and the interpreter computes frames. None where it cannot.
+  virtual std::optional<double> frame_component(std::string_view /*frame_text*/, std::string_view /*axis*/,
+                                                std::string_view /*component*/) const {
+    return std::nullopt;
+  }
+  virtual std::optional<std::string> frame_with_component(std::string_view /*frame_text*/, std::string_view /*axis*/,
+                                                          std::string_view /*component*/, double /*value*/) const {
+    return std::nullopt;
+  }
 };
 
 using MachineDataMap = std::map<std::string, double, std::less<>>;
