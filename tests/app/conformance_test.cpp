@@ -72,10 +72,15 @@ std::string sanitized(const std::string& relative) {
 }
 
 std::string test_name(const ::testing::TestParamInfo<std::string>& info) {
+  // Counted once: every test process names all programs at start (CTest runs one per test), and
+  // comparing each with all was quadratic (0.3 s per process, seconds under the sanitizers).
+  static const std::map<std::string, int> uses = [] {
+    std::map<std::string, int> m;
+    for (const std::string& p : programs()) ++m[sanitized(p)];
+    return m;
+  }();
   const std::string name = sanitized(info.param);
-  const auto& all = programs();
-  const auto same = std::count_if(all.begin(), all.end(), [&](const std::string& p) { return sanitized(p) == name; });
-  return same > 1 ? name + "_" + std::to_string(info.index) : name;
+  return uses.at(name) > 1 ? name + "_" + std::to_string(info.index) : name;
 }
 
 std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
