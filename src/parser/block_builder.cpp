@@ -33,10 +33,7 @@ class ProgramLoader::BlockBuilder {
         case ItemKind::Assign: assignment(item); break;
         case ItemKind::Procedure: procedure(item); break;
         case ItemKind::Name: name(item); break;
-        case ItemKind::ToolName:
-          out_.tool_name = std::string(item.name);
-          has_words_ = true;
-          break;
+        case ItemKind::ToolName: tool_by_name(std::string(item.name), item.column); break;
         case ItemKind::LCall: set_call(item.name, item.column); break;
         case ItemKind::Passes: passes_ = static_cast<uint64_t>(std::max<int64_t>(1, item.code)); break;
       }
@@ -90,8 +87,17 @@ class ProgramLoader::BlockBuilder {
   // take the last); H, an auxiliary function, up to three times.
   void refuse_repeated(std::string_view name, uint32_t column) const {
     if (name == "H") return;
+    if (name == "T" && out_.tool_name) throw LineError(12000, column, "address T programmed twice in the block");
     for (const AddressWord& a : out_.addresses)
       if (a.name == name) throw LineError(12000, column, "address " + std::string(name) + " programmed twice in the block");
+  }
+
+  // T="NAME" (tool management): T once per block, by name or number (T="A" M6 T="B": the
+  // control refuses the block, as T1 T2).
+  void tool_by_name(std::string name, uint32_t column) {
+    if (out_.tool_name || out_.find_address("T")) throw LineError(12000, column, "address T programmed twice in the block");
+    out_.tool_name = std::move(name);
+    has_words_ = true;
   }
 
   void address(const Item& item) {
@@ -196,8 +202,7 @@ class ProgramLoader::BlockBuilder {
       // T=<STRING expression> under tool management (T=_NAME in a tool-change macro): a tool name.
       const Value v = l_.eval_value(item.expr);
       if (v.is_text()) {
-        out_.tool_name = v.text;
-        has_words_ = true;
+        tool_by_name(v.text, item.column);
         return;
       }
     }
