@@ -104,7 +104,7 @@ std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<
   }
   const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
   if (spindle < 0) return std::nullopt;
-  return Value(actual ? interpreter_.actual_spindle_speed(spindle) : interpreter_.programmed_spindle_speed(spindle));
+  return Value(actual ? interpreter_.spindle_speed_on_ramp(spindle) : interpreter_.programmed_spindle_speed(spindle));
 }
 
 std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece, bool actual) const {

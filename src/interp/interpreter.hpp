@@ -82,6 +82,9 @@ class Interpreter {
   // turns at in a dry run (0 when stopped, negative under M4; interpreter_spindle.cpp).
   double programmed_spindle_speed(int spindle) const;
   double actual_spindle_speed(int spindle) const;
+  // $AA_S: the speed on the spindle's run-up ramp (MD35200) at the interpreter's clock; the set
+  // speed once the ramp is through (interpreter_spindle_run_up.cpp).
+  double spindle_speed_on_ramp(int spindle) const;
   // A lower bound of the time so far (path length / feed, dwells, clock polls).
   double nominal_time_s() const { return nominal_time_s_ + clock_wait_s_; }
   // The part of it spent moving at feed with a tool active (tool action time, $AC_CUTTING_TIME).

@@ -124,6 +124,22 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   emit(std::move(e));
 }
 
+double Interpreter::spindle_speed_on_ramp(int spindle) const {
+  // A warm-up macro polls $AA_S until the spindle is at speed (S8000 M3 / WHILE $AA_S[1]<7900
+  // ENDWHILE): each poll lets the clock run (SystemVariables::read), so the loop waits out the
+  // ramp. The ramp as the run-up model has it: from its start speed at MD35200 since the change.
+  const double target = actual_spindle_speed(spindle);
+  const SpindleRunUp* ramp = &run_up_;
+  if (spindle != 0 && spindle != master_spindle_) {
+    const auto it = other_spindles_.find(spindle);
+    if (it == other_spindles_.end()) return target;
+    ramp = &it->second.run_up;
+  }
+  const double rise = target - ramp->from_rpm;
+  const double reached = profile_.spindle_speedctrl_accel_rev_s2 * 60.0 * (nominal_time_s() - ramp->since_s);
+  return reached >= std::abs(rise) ? target : ramp->from_rpm + std::copysign(std::max(0.0, reached), rise);
+}
+
 void Interpreter::note_tool_change_stops_spindle() {
   // A tool change with M6 (MD22550 = 1, a milling machine's magazine) stops and orients the tool
   // spindle for the changer: the next programmed speed, even the same S M3 again, ramps from

@@ -77,6 +77,9 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     ++view_reads_;
     return {Value(view_ ? view_->cutting_time_s() : 0.0), false};
   }
+  // The actual spindle speed follows its run-up ramp in time: a poll of it lets the clock run, as
+  // a poll of the clock does (a warm-up loop waits for the speed).
+  if (name == "$AA_S" && view_) view_->poll_clock(line_);
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? view_->poll_clock(line_) : 0.0)), false};
