@@ -33,6 +33,21 @@ void for_each_extra_jump(const Junction& j, F&& f) {
   }
 }
 
+// Inside one run of the compressor (both sides its output, the geometry tangent-continuous) the
+// control compresses the extra axes with the geometry (COMPCAD/COMPCURV polynomials; Job Planning,
+// "Compression of the orientation"): their rate d(axis)/ds does not jump at the join but changes
+// along the spans. drycut keeps them linear per span, so the change is taken as spread over the
+// half spans either side, L = (L_before + L_after)/2: axis acceleration v²·Δ/L, jerk v³·Δ/L²
+// (before 2026-11-28 the jump rules braked a 5-axis stream at every join).
+bool extra_axes_smoothed(const Junction& j) {
+  return j.before.compressed_blocks > 0 && j.after.compressed_blocks > 0 &&
+         (j.after_start.tangent - j.before_end.tangent).norm() < 1e-6;
+}
+
+double smoothing_length(const Junction& j) {
+  return 0.5 * (j.before_dynamics.length + j.after_dynamics.length);
+}
+
 }  // namespace
 
 double FeedConstraint::max_velocity(const ElementDynamics& d, const CurvePoint&) const {
@@ -92,8 +107,12 @@ double CornerConstraint::max_velocity(const Junction& j) const {
   const Vec3 jump = j.after_start.tangent - j.before_end.tangent;
   double v = kInf;
   const double ovl = std::min(j.before_dynamics.ovl_factor, j.after_dynamics.ovl_factor) - 1.0;
+  const bool smoothed = extra_axes_smoothed(j);
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-    v = std::min(v, std::min(before.raw_accel, after.raw_accel) * ovl * j.after_dynamics.ipo_cycle / dt);
+    if (smoothed)
+      v = std::min(v, std::sqrt(std::min(before.accel, after.accel) * smoothing_length(j) / dt));
+    else
+      v = std::min(v, std::min(before.raw_accel, after.raw_accel) * ovl * j.after_dynamics.ipo_cycle / dt);
   });
   if (jump.norm() < 1e-9) return v;  // tangent-continuous: no velocity jump on any geometry axis
   for (int i = 0; i < 3; ++i) {
@@ -112,8 +131,13 @@ double TransitionJerkConstraint::max_velocity(const Junction& j) const {
   const Vec3 jump = j.after_start.tangent - j.before_end.tangent;
   const double t = j.after_dynamics.ipo_cycle;
   double v = kInf;
+  const bool smoothed = extra_axes_smoothed(j);
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-    v = std::min(v, std::min(before.transition_jerk, after.transition_jerk) * t * t / dt);
+    const double l = smoothing_length(j);
+    if (smoothed)
+      v = std::min(v, cube_root(std::min(before.jerk, after.jerk) * l * l / dt));
+    else
+      v = std::min(v, std::min(before.transition_jerk, after.transition_jerk) * t * t / dt);
   });
   if (jump.norm() < 1e-9) return v;
   for (int i = 0; i < 3; ++i) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "motion/path_constraints.hpp"
 #include "motion/planner.hpp"
 #include "motion/positioning_axes.hpp"
 #include "planner_test_support.hpp"
@@ -84,6 +85,35 @@ interp::PathElement positioning(double travel, bool synchronous, int line_no) {
   e.positioning.push_back({"A", travel, 30.0, 600.0, 0.0, 0.0, synchronous});
   e.source.line = static_cast<uint32_t>(line_no);
   return e;
+}
+
+TEST(PlannerExtraAxes, CompressedRunSpreadsTheRotaryRateChangeOverItsSpans) {
+  // Two tangent-continuous compressor spans of 10 and 20 mm; A's rate d(A)/ds goes 0.5 -> 1.0
+  // deg/mm (Δ = 0.5). Inside a compressed run the control's polynomial spreads that change over
+  // L = (10 + 20)/2 = 15 mm: acceleration v²·Δ/L <= 600 gives v <= sqrt(600·15/0.5) = 94.87 mm/s,
+  // jerk v³·Δ/L² <= 6000 gives v <= cbrt(6000·15²/0.5) = 139.25 mm/s. Not compressed, the jump
+  // rules hold: overload 600·(1.2 - 1)·0.004/0.5 = 0.96 mm/s, transition jerk
+  // 6000·0.004²/0.5 = 0.192 mm/s.
+  interp::PathElement before = line(O, Vec3(10, 0, 0), 600, {}, 1);
+  interp::PathElement after = line(Vec3(10, 0, 0), Vec3(30, 0, 0), 600, {}, 2);
+  before.compressed_blocks = after.compressed_blocks = 3;
+  ElementDynamics db, da;
+  for (ElementDynamics* d : {&db, &da}) {
+    d->soft = true;
+    d->ipo_cycle = 0.004;
+    d->ovl_factor = 1.2;
+  }
+  db.length = 10;
+  da.length = 20;
+  db.extra = {ExtraAxisTerm{0, 0.5, 60, 600, 6000, 600, 6000}};
+  da.extra = {ExtraAxisTerm{0, 1.0, 60, 600, 6000, 600, 6000}};
+  CurvePoint end_of_before, start_of_after;  // both along +X
+  const Junction j{before, db, end_of_before, after, da, start_of_after};
+  EXPECT_NEAR(CornerConstraint().max_velocity(j), std::sqrt(600.0 * 15.0 / 0.5), 1e-9);
+  EXPECT_NEAR(TransitionJerkConstraint().max_velocity(j), std::cbrt(6000.0 * 15.0 * 15.0 / 0.5), 1e-6);
+  before.compressed_blocks = 0;
+  EXPECT_NEAR(CornerConstraint().max_velocity(j), 600.0 * 0.2 * 0.004 / 0.5, 1e-12);
+  EXPECT_NEAR(TransitionJerkConstraint().max_velocity(j), 6000.0 * 0.004 * 0.004 / 0.5, 1e-12);
 }
 
 TEST(PlannerExtraAxes, PositioningMoveIsRestToRest) {
