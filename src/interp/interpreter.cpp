@@ -106,6 +106,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   apply_addresses(ctx);
   if (!block.axis_words.empty()) apply_axis_words(ctx);
   if (!block.m.empty()) apply_m_words(ctx);
+  if (spindle_left_to_changer_) note_spindle_programmed(block);
   note_spindle_change();
   // G63 (tapping with a compensating chuck; Fundamentals, "Tapping with compensating chuck
   // (G63)") is non-modal: its block runs linear at F (at a fixed 100 % override, as drycut plans
@@ -775,7 +776,10 @@ void Interpreter::emit_preprocessing_stop(BlockContext& ctx, const char* label) 
 
 void Interpreter::emit_block_end(BlockContext& ctx) {
   // What a block does after its motion: tool change, STOPRE, M0/M1/M2/M30.
-  if (ctx.tool_change) change_tool(ctx);
+  if (ctx.tool_change) {
+    change_tool(ctx);
+    if (spindle_left_to_changer_) note_spindle_programmed(ctx.block);  // T1 M6 S1000 M3
+  }
   if (ctx.preprocessing_stop) emit_preprocessing_stop(ctx, "STOPRE");
   if (ctx.stop) {
     if (spline_.active()) end_spline_run(nullptr);

@@ -390,6 +390,10 @@ class Interpreter {
   SpindleRunUp run_up_;
   uint32_t run_up_count_ = 0;
   uint32_t run_up_mark_ = 0;  // a ramp began: the next element emitted carries its id
+  // M6 stopped the turning spindle and no S, M3/M4/M5 or SPOS came since: the first cut restarts
+  // it at the old speed, which the machine's tool-change cycle may not do (warned there).
+  bool spindle_left_to_changer_ = false;
+  void note_spindle_programmed(const parser::Block& block);
   void note_spindle_change();
   SpindleRunUp standing_run_up() const;  // a spindle standing since now
   SpindleRunUp next_run_up(const SpindleCommand& old, const SpindleRunUp& ramp, double set_rpm) const;

@@ -20,8 +20,10 @@
 // has no id: its estimate stands.
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "interp/interpreter.hpp"
+#include "interp/interpreter_block.hpp"
 
 namespace drycut::interp {
 
@@ -95,6 +97,11 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
   // back.
   if (recorder_.active()) return;  // a contour recorded without moving: the first real cut waits
   run_up_.pending = false;
+  if (std::exchange(spindle_left_to_changer_, false) && state_.spindle != SpindleState::Stopped)
+    diagnostics_.warn(detail::kNotModelled,
+                      "the tool change (M6) stopped the spindle and no S, M3 or M4 came since: drycut restarts it at the "
+                      "last speed for this cut (whether the machine's tool-change cycle does is the builder's)",
+                      {next.source.file_name(), next.source.line, 0}, next.source.text);
   if (state_.constant_cutting_speed && state_.spindle != SpindleState::Stopped && next.curve) {
     // G96: the set speed where the cut starts, not where G96 was programmed (a tool-change point
     // far out gives a low speed, the centre the LIMS speed).
@@ -140,11 +147,24 @@ double Interpreter::spindle_speed_on_ramp(int spindle) const {
   return reached >= std::abs(rise) ? target : ramp->from_rpm + std::copysign(std::max(0.0, reached), rise);
 }
 
+void Interpreter::note_spindle_programmed(const parser::Block& block) {
+  // After M6: a block that programs the master spindle (S, M3/M4/M5/M19, SPOS) answers it, in
+  // the tool-change block too (T1 M6 S1000 M3, whatever the order of its words).
+  const bool speed = std::any_of(block.addresses.begin(), block.addresses.end(), [&](const parser::AddressWord& a) {
+    return a.name == "S" || a.name == "SPOS" || numbered_spindle(a.name) == master_spindle_;
+  });
+  const bool function = std::any_of(block.m.begin(), block.m.end(), [&](const parser::MWord& m) {
+    return ((m.code >= 3 && m.code <= 5) || m.code == 19) && (m.extension <= 0 || m.extension == master_spindle_);
+  });
+  if (speed || function) spindle_left_to_changer_ = false;
+}
+
 void Interpreter::note_tool_change_stops_spindle() {
   // A tool change with M6 (MD22550 = 1, a milling machine's magazine) stops and orients the tool
   // spindle for the changer: the next programmed speed, even the same S M3 again, ramps from
   // standstill after it. A turret's T (MD22550 = 0, a lathe) leaves the work spindle turning.
   if (!tools_.change_on_m_code()) return;
+  spindle_left_to_changer_ = state_.spindle != SpindleState::Stopped;
   run_up_ = standing_run_up();
   spindle_command_ = SpindleCommand{SpindleState::Stopped, 0.0, false, master_spindle_};
 }
