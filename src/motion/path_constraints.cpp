@@ -1,5 +1,6 @@
 #include "motion/path_constraints.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -38,10 +39,18 @@ void for_each_extra_jump(const Junction& j, F&& f) {
 // "Compression of the orientation"): their rate d(axis)/ds does not jump at the join but changes
 // along the spans. drycut keeps them linear per span, so the change is taken as spread over the
 // half spans either side, L = (L_before + L_after)/2: axis acceleration v²·Δ/L, jerk v³·Δ/L²
-// (before 2026-11-28 the jump rules braked a 5-axis stream at every join).
+// (before 2026-11-28 the jump rules braked a 5-axis stream at every join). Only a gradual change
+// (Δ at most half the larger rate, kMaxSmoothedRateChange): a span averages the rate of the blocks
+// it replaces, so a sudden turn inside a run (8 deg/mm among 0.2 deg/mm blocks) keeps the jump
+// rules, which hold the axis back as the averaged span cannot (drycut's assumption).
+constexpr double kMaxSmoothedRateChange = 0.5;
 bool extra_axes_smoothed(const Junction& j) {
   return j.before.compressed_blocks > 0 && j.after.compressed_blocks > 0 &&
          (j.after_start.tangent - j.before_end.tangent).norm() < 1e-6;
+}
+
+bool gradual(double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
+  return dt <= kMaxSmoothedRateChange * std::max(std::abs(before.tangent), std::abs(after.tangent));
 }
 
 double smoothing_length(const Junction& j) {
@@ -109,7 +118,7 @@ double CornerConstraint::max_velocity(const Junction& j) const {
   const double ovl = std::min(j.before_dynamics.ovl_factor, j.after_dynamics.ovl_factor) - 1.0;
   const bool smoothed = extra_axes_smoothed(j);
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-    if (smoothed)
+    if (smoothed && gradual(dt, before, after))
       v = std::min(v, std::sqrt(std::min(before.accel, after.accel) * smoothing_length(j) / dt));
     else
       v = std::min(v, std::min(before.raw_accel, after.raw_accel) * ovl * j.after_dynamics.ipo_cycle / dt);
@@ -134,7 +143,7 @@ double TransitionJerkConstraint::max_velocity(const Junction& j) const {
   const bool smoothed = extra_axes_smoothed(j);
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
     const double l = smoothing_length(j);
-    if (smoothed)
+    if (smoothed && gradual(dt, before, after))
       v = std::min(v, cube_root(std::min(before.jerk, after.jerk) * l * l / dt));
     else
       v = std::min(v, std::min(before.transition_jerk, after.transition_jerk) * t * t / dt);

@@ -96,7 +96,7 @@ void ProgramLoader::execute_control() {
   switch (s) {
     case Statement::If:
       if (eval(parsed_.condition) != 0.0) {
-        c.input_condition = system_variables_.input_reads() != input_reads_at_line_;
+        c.awaited_input = condition_input();
         push_control(c);
       } else if (skip_forward(true) == Statement::Else) {
         c.kind = Statement::If;
@@ -114,7 +114,7 @@ void ProgramLoader::execute_control() {
       return;
     case Statement::While:
       if (eval(parsed_.condition) != 0.0) {
-        c.input_condition = system_variables_.input_reads() != input_reads_at_line_;
+        c.awaited_input = condition_input();
         push_control(c);
       } else
         skip_forward(false);
@@ -122,11 +122,11 @@ void ProgramLoader::execute_control() {
     case Statement::EndWhile: {
       expect_top(Statement::While);
       const LinePosition head = stack.back().head;
-      const bool by_input = stack.back().input_condition;
+      const std::string awaited = stack.back().awaited_input;
       const LinePosition after = f.reader.tell();
       stack.pop_back();
       f.reader.seek(head);  // the WHILE line evaluates its condition again
-      if (check_endless_loop(by_input)) f.reader.seek(after);  // the awaited input came: the loop ends
+      if (check_endless_loop(awaited)) f.reader.seek(after);  // the awaited input came: the loop ends
       return;
     }
     case Statement::For:
@@ -143,7 +143,7 @@ void ProgramLoader::execute_control() {
     case Statement::Until:
       expect_top(Statement::Repeat);
       if (eval(parsed_.condition) == 0.0)
-        repeat_loop_body(f, system_variables_.input_reads() != input_reads_at_line_);
+        repeat_loop_body(f, condition_input());
       else
         stack.pop_back();
       return;
@@ -197,10 +197,10 @@ void ProgramLoader::next_for_pass(Frame& f, uint32_t column) {
 
 // UNTIL (condition false) and ENDLOOP: back to the body of the innermost REPEAT / LOOP, unless
 // the endless-loop check finds the loop waiting for an input that came: then the loop ends.
-void ProgramLoader::repeat_loop_body(Frame& f, bool decided_by_input) {
+void ProgramLoader::repeat_loop_body(Frame& f, const std::string& awaited) {
   const LinePosition after = f.reader.tell();
   f.reader.seek(f.control.back().body);
-  if (check_endless_loop(decided_by_input)) {  // the awaited input came: the loop ends
+  if (check_endless_loop(awaited)) {  // the awaited input came: the loop ends
     f.reader.seek(after);
     f.control.pop_back();
   }
@@ -344,7 +344,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       text_ = from_text;
     }
     if (found) {
-      const bool by_input = jump_decided_by_input();
+      const std::string awaited = jump_awaited_input(found->line);
       // Structures that start at or after the target are left (and entered again later).
       auto& stack = f.control;
       size_t kept = stack.size();
@@ -352,7 +352,7 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
       std::vector<ControlFrame> left(stack.begin() + static_cast<std::ptrdiff_t>(kept), stack.end());
       stack.resize(kept);
       f.reader.seek(*found);
-      if (check_endless_loop(by_input)) {  // the awaited input came: the jump back is not taken
+      if (check_endless_loop(awaited)) {  // the awaited input came: the jump back is not taken
         stack.insert(stack.end(), left.begin(), left.end());
         f.reader.seek(after);
       }
@@ -523,18 +523,20 @@ void ProgramLoader::loop_state(std::string& out) const {
   put(macros_.size());
 }
 
-bool ProgramLoader::jump_decided_by_input() const {
-  // IF ... GOTOB, UNTIL, CASE: the condition on this line. A GOTOB of its own inside an IF block
-  // (IF $A_IN[4]==0 / GOTOB W1 / ENDIF): that IF's condition.
-  if (system_variables_.input_reads() != input_reads_at_line_) return true;
-  if (parsed_.statement != Statement::Goto) return false;
-  const auto& stack = frames_.back()->control;
-  for (auto it = stack.rbegin(); it != stack.rend(); ++it)
-    if (it->kind == Statement::If) return it->input_condition;
-  return false;
+std::string ProgramLoader::condition_input() const {
+  return system_variables_.input_reads() != input_reads_at_line_ ? system_variables_.last_input_read() : std::string();
 }
 
-bool ProgramLoader::check_endless_loop(bool decided_by_input) {
+std::string ProgramLoader::jump_awaited_input(uint32_t target_line) const {
+  if (system_variables_.input_reads() != input_reads_at_line_) return system_variables_.last_input_read();
+  if (parsed_.statement != Statement::Goto) return {};
+  const auto& stack = frames_.back()->control;
+  if (!stack.empty() && stack.back().kind == Statement::If && stack.back().head.line >= target_line)
+    return stack.back().awaited_input;
+  return {};
+}
+
+bool ProgramLoader::check_endless_loop(const std::string& awaited) {
   // A big state (large arrays) is compared only every state-size/1 KiB lines, so that the guard
   // costs at most about 1 KiB of copying per line executed; states up to 1 KiB are compared at
   // every jump. Skipping visits never gives a false alarm, and a loop is still found: the visits
@@ -546,8 +548,8 @@ bool ProgramLoader::check_endless_loop(bool decided_by_input) {
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
   loop_state(loop_state_);
   next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
-  const LoopGuard::Visit visit{system_variables_.view_reads(), system_variables_.input_reads(), motion_blocks_,
-                               decided_by_input};
+  const LoopGuard::Visit visit{system_variables_.view_reads(), system_variables_.input_reads(), work_blocks_,
+                               dwell_blocks_, system_variables_.clock_reads(), !awaited.empty()};
   switch (loop_guard_.repeats(site, loop_state_, visit)) {
     case LoopGuard::Repeat::No:
       return false;
@@ -559,12 +561,13 @@ bool ProgramLoader::check_endless_loop(bool decided_by_input) {
     {
       // Only an input or PLC datum can be given a value in the profile; the operator at M0 and
       // a synchronized action's variables cannot.
-      const std::string& what = system_variables_.last_input_read();
+      const std::string what = awaited.empty() ? system_variables_.last_input_read() : awaited;
       const bool signal = classify_system_variable(what.substr(0, what.find('['))) == SystemVariableClass::InputOutput;
       warn(990014, "loop waits for " + what + (signal ? " (give it a value in the profile's machine_data to model the signal)" : ""),
            0);
-      // The signal came: a check after the wait (IF $A_IN[9]==0 SETAL(...)) sees it.
-      system_variables_.input_arrived(what);
+      // The signal came: a check after the wait (IF $A_IN[9]==0 SETAL(...)) sees it. Only the
+      // input the loop's condition waits for (not one the body read besides).
+      if (!awaited.empty()) system_variables_.input_arrived(awaited);
     }
       return true;
   }

@@ -16,7 +16,7 @@ struct ProgramLoader::ControlFrame {
   LinePosition body;  // the line after it
   double end = 0.0;   // FOR: last value
   std::string variable;  // FOR: loop variable
-  bool input_condition = false;  // IF/WHILE: its condition read an input or PLC datum
+  std::string awaited_input;  // IF/WHILE: the input or PLC datum its condition read last (empty: none)
 };
 
 // REPEAT start [end] P=n / REPEATB: lines from `start` up to (not including) `stop` are run

@@ -12,12 +12,15 @@ LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, co
   Record& r = it->second;
   // A wait on an input is a wait whatever else the stretch read: the input (or a synchronized
   // action's variable) is what ends it on the machine.
-  if (r.visits > 0 && r.state == state && r.input_reads != v.input_reads) return Repeat::WaitsOnInput;
-  if (v.decided_by_input && r.visits > 0 && r.last_motion_blocks == v.motion_blocks &&
-      r.last_input_reads != v.input_reads)
-    return Repeat::WaitsOnInput;  // a wait with a timeout counter or clock beside the input
+  if (r.visits > 0 && r.state == state && r.input_reads != v.input_reads && r.last_clock_reads == v.clock_reads)
+    return Repeat::WaitsOnInput;
+  if (v.decided_by_input && r.visits > 0 && r.last_work_blocks == v.work_blocks &&
+      r.last_dwell_blocks != v.dwell_blocks && r.last_input_reads != v.input_reads)
+    return Repeat::WaitsOnInput;  // a wait with a timeout counter beside the input
   if (r.visits > 0 && r.reads == v.reads && r.state == state) return Repeat::Endless;
-  r.last_motion_blocks = v.motion_blocks;
+  r.last_work_blocks = v.work_blocks;
+  r.last_dwell_blocks = v.dwell_blocks;
+  r.last_clock_reads = v.clock_reads;
   r.last_input_reads = v.input_reads;
   if (++r.visits == r.next_save) {
     r.state = state;

@@ -20,12 +20,15 @@
 // before 2026-11-27 any such read made the guard give up, and the wait ran to the step limit).
 //
 // A wait with a timeout changes state on every pass (W1: G4 F0.5 / R10=R10+1 / IF R10>20
-// SETAL(65020) / IF $A_IN[7]==0 GOTOB W1; WHILE ($A_IN[9]==0) AND ($AC_TIMER[1]<10)), so it
-// never repeats: it ran into its own timeout alarm (before 2026-11-28). So a jump back whose
-// condition read an input (Visit::decided_by_input: IF ... GOTOB, WHILE, UNTIL, or the IF block
-// around a GOTOB) is a wait too when the pass since the last visit moved no axis: on the
-// machine the signal ends it. A loop that moves (WHILE (R1<10) AND ($A_IN[3]==0) with cuts
-// inside) is work, and runs its passes.
+// SETAL(65020) / IF $A_IN[7]==0 GOTOB W1), so it never repeats: it ran into its own timeout
+// alarm (before 2026-11-28). So a jump back whose condition read an input (Visit::
+// decided_by_input: IF ... GOTOB, WHILE, UNTIL, or the IF block around a GOTOB) is a wait too
+// when the pass since the last visit dwelled (G4) and did nothing else a block carries (no axis,
+// no M function, no S): on the machine the signal ends it. A loop that computes without
+// dwelling (counting set inputs, testing bits of $A_DBB) or works (cuts, spindle steps of a
+// warm-up with an abort input) runs its passes. A pass that polled the clock or the spindle's
+// actual speed waits for time as well (WHILE ($AA_S<7900) AND ($A_IN[3]==0)): it runs on until
+// that ends it.
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -38,11 +41,13 @@ class LoopGuard {
   struct Visit {
     uint64_t reads = 0;          // running count of reads of the interpreter's state
     uint64_t input_reads = 0;    // running count of input and PLC reads
-    uint64_t motion_blocks = 0;  // running count of blocks with axis motion
+    uint64_t work_blocks = 0;    // running count of blocks that move axes, program M or S
+    uint64_t dwell_blocks = 0;   // running count of G4 blocks
+    uint64_t clock_reads = 0;    // running count of reads that let the clock run ($AC_TIMER, $AA_S)
     bool decided_by_input = false;
   };
   // WaitsOnInput when `state` at `site` equals the saved one and inputs were read since, or
-  // when the jump was decided by an input and no axis moved since the last visit; else Endless
+  // when the jump was decided by an input and the pass since the last visit only dwelled; else Endless
   // when the state equals the saved one and no interpreter state was read since.
   Repeat repeats(uint64_t site, const std::string& state, const Visit& visit);
 
@@ -53,7 +58,9 @@ class LoopGuard {
     uint64_t input_reads = 0;
     uint64_t visits = 0;
     uint64_t next_save = 1;
-    uint64_t last_motion_blocks = 0;  // at the last visit (not only the saved one)
+    uint64_t last_work_blocks = 0;  // at the last visit (not only the saved one)
+    uint64_t last_dwell_blocks = 0;
+    uint64_t last_clock_reads = 0;
     uint64_t last_input_reads = 0;
   };
   std::unordered_map<uint64_t, Record> sites_;

@@ -179,7 +179,7 @@ bool ProgramLoader::next(Block& out) {
     if (pending_line_ && !frames_.empty()) {
       if (take_pending_line() && execute_line(out)) {
         if (modal_call_) schedule_modal_call(out);
-        if (!out.axis_words.empty()) ++motion_blocks_;
+        count_handed_block(out);
         return true;
       }
       continue;
@@ -225,10 +225,15 @@ bool ProgramLoader::next(Block& out) {
     if (frames_.size() == 1) main_has_content_ = true;
     if (execute_line(out)) {
       if (modal_call_) schedule_modal_call(out);
-      if (!out.axis_words.empty()) ++motion_blocks_;
+      count_handed_block(out);
       return true;
     }
   }
+}
+
+void ProgramLoader::count_handed_block(const Block& out) {
+  if (out.has_g(4)) ++dwell_blocks_;
+  else if (!out.axis_words.empty() || !out.m.empty() || out.find_address("S")) ++work_blocks_;
 }
 
 bool ProgramLoader::execute_line(Block& out) {

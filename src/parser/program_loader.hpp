@@ -162,7 +162,7 @@ class ProgramLoader {
   void execute_control();
   void start_for_loop(ControlFrame& c, uint32_t column);  // FOR
   void next_for_pass(Frame& f, uint32_t column);          // ENDFOR
-  void repeat_loop_body(Frame& f, bool decided_by_input = false);  // UNTIL (false), ENDLOOP
+  void repeat_loop_body(Frame& f, const std::string& awaited = {});  // UNTIL (false), ENDLOOP
   void execute_if_goto();
   void execute_case();
   void execute_repeat_section();
@@ -175,9 +175,13 @@ class ProgramLoader {
   // At every backward jump: alarm 990004 when the loader is back in a state it had here.
   // After a backward jump: raises 990004 when the loader is back in a state it had (an endless
   // loop); true when the repeating loop reads inputs (it waits for them: the caller leaves it).
-  // `decided_by_input`: the condition that takes this jump back read an input (a wait on it).
-  bool check_endless_loop(bool decided_by_input = false);
-  bool jump_decided_by_input() const;  // this line's condition, or an enclosing IF's for GOTOB
+  // `awaited`: the input the condition that takes this jump back read (a wait on it); empty: none.
+  bool check_endless_loop(const std::string& awaited = {});
+  // The input this line's condition read (empty: none).
+  std::string condition_input() const;
+  // For a jump back to `target_line`: this line's condition, or for a GOTOB of its own the IF
+  // block that directly wraps it and starts after the target (W1: / IF $A_IN[4]==0 / GOTOB W1).
+  std::string jump_awaited_input(uint32_t target_line) const;
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to_start();
@@ -242,7 +246,9 @@ class ProgramLoader {
   uint64_t main_run_reads_seen_ = 0;  // system_variables_.main_run_reads() at the last block
   uint64_t steps_ = 0;
   const ControllerStateView* state_view_ = nullptr;  // frames of FRAME variables (components)
-  uint64_t motion_blocks_ = 0;         // blocks handed on with axis words (a loop that moves works)
+  uint64_t work_blocks_ = 0;   // blocks handed on that move axes or program M functions or S
+  uint64_t dwell_blocks_ = 0;  // G4 blocks handed on (a wait loop dwells between its polls)
+  void count_handed_block(const Block& out);
   uint64_t input_reads_at_line_ = 0;   // system_variables_.input_reads() when this line began
   bool main_has_content_ = false;
   std::bitset<1000> g_used_, m_used_;

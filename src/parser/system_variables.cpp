@@ -64,7 +64,7 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     // Job Planning, "Timer variable $AC_TIMER[n]": counts seconds from the value written (>= 0)
     // until -1 stops it. Time is the interpreter's (poll_clock), so a timed warm-up loop ends.
     if (auto it = timer_start_.find(key); it != timer_start_.end())
-      return {Value((view_ ? view_->poll_clock(line_) : 0.0) - it->second), false};
+      return {Value((view_ ? poll_clock() : 0.0) - it->second), false};
     if (auto it = written_.find(key); it != written_.end()) return {Value(it->second), false};
     return {Value(0.0), false};
   }
@@ -79,10 +79,10 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   }
   // The actual spindle speed follows its run-up ramp in time: a poll of it lets the clock run, as
   // a poll of the clock does (a warm-up loop waits for the speed).
-  if (name == "$AA_S" && view_) view_->poll_clock(line_);
+  if (name == "$AA_S" && view_) poll_clock();
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
-    return {Value(*run_clock_reading(name, view_ ? view_->poll_clock(line_) : 0.0)), false};
+    return {Value(*run_clock_reading(name, view_ ? poll_clock() : 0.0)), false};
   }
   const SystemVariableClass c = classify_system_variable(name);
   if (c == SystemVariableClass::InputOutput) {

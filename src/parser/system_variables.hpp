@@ -98,6 +98,9 @@ class SystemVariables {
   // before it have run (an implicit STOPRE; Job Planning, "Preprocessing stop (STOPRE)").
   uint64_t main_run_reads() const { return main_run_reads_; }
   const std::string& last_input_read() const { return last_input_; }
+  // How many reads let the clock run so far ($AC_TIMER, the run clock, $AA_S): a loop that polls
+  // them waits for time, not only for an input it reads besides.
+  uint64_t clock_reads() const { return clock_reads_; }
   // A wait on `key` ended (the loop guard took the signal as come): a digital input ($A_IN[n])
   // reads its other value from now on. Other data (bytes, words) have no one awaited value.
   void input_arrived(const std::string& key);
@@ -120,6 +123,11 @@ class SystemVariables {
   mutable uint64_t view_reads_ = 0;
   mutable uint64_t input_reads_ = 0;
   mutable uint64_t main_run_reads_ = 0;
+  mutable uint64_t clock_reads_ = 0;
+  double poll_clock() const {
+    ++clock_reads_;
+    return view_ ? view_->poll_clock(line_) : 0.0;
+  }
   mutable std::string last_input_;
 };
 
