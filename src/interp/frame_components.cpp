@@ -129,10 +129,14 @@ std::optional<FrameComponents> FrameComponents::of_product(const Frame& frame) {
     r.col(i) /= c.scale[i];
   }
   if (r.determinant() < 0 || !(r.transpose() * r).isIdentity(1e-9)) return std::nullopt;
-  const double deg = 180.0 / 3.14159265358979323846;
-  c.rotation_deg = Eigen::Vector3d(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
-                                   std::atan2(r(1, 0), r(0, 0))) * deg;
+  c.rotation_deg = rpy_degrees(r);
   return c;
+}
+
+Eigen::Vector3d rpy_degrees(const Eigen::Matrix3d& r) {
+  const double deg = 180.0 / 3.14159265358979323846;
+  return Eigen::Vector3d(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
+                         std::atan2(r(1, 0), r(0, 0))) * deg;
 }
 
 std::string FrameComponents::text(double unit) const {

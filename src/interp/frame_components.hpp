@@ -25,6 +25,10 @@ namespace drycut::interp {
 // CFRAME(l00,l01,l02,l10,l11,l12,l20,l21,l22,tx,ty,tz), the linear part and the translation.
 inline constexpr std::string_view kWholeFrameFunction = "CFRAME";
 
+// The RPY angles (degrees) of a rotation matrix r = Rz(c)·Ry(b)·Rx(a), as ROT and $P_..[ax, RT]
+// give them: (a, b, c).
+Eigen::Vector3d rpy_degrees(const Eigen::Matrix3d& r);
+
 struct FrameComponents {
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   Eigen::Vector3d fine = Eigen::Vector3d::Zero();

@@ -10,9 +10,7 @@
 // active or total frame) are taken from it: TR its translation (the outermost component), FI 0,
 // SC the length of each column, RT the RPY angles of what remains (Rz·Ry·Rx, as ROT), MI 1 where
 // a single mirror makes the determinant negative on that axis' column sign.
-#include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "interp/controller_state_view.hpp"
 #include "interp/frame_components.hpp"
@@ -38,12 +36,7 @@ std::optional<double> component_of_matrix(const Frame& frame, int axis, std::str
   Eigen::Matrix3d r = l;
   for (int i = 0; i < 3; ++i) r.col(i) /= scale[i];
   if (c == "MI") return r.determinant() < 0 && r(axis, axis) < 0 ? 1.0 : 0.0;
-  if (c == "RT" && r.determinant() > 0) {
-    const double deg = 180.0 / std::numbers::pi;
-    const Eigen::Vector3d rpy(std::atan2(r(2, 1), r(2, 2)), std::asin(std::clamp(-r(2, 0), -1.0, 1.0)),
-                              std::atan2(r(1, 0), r(0, 0)));
-    return rpy[axis] * deg;
-  }
+  if (c == "RT" && r.determinant() > 0) return rpy_degrees(r)[axis];
   return std::nullopt;
 }
 
@@ -54,6 +47,12 @@ std::optional<double> component_of(const FrameComponents& f, int axis, std::stri
   if (c == "SC") return f.scale[axis];
   if (c == "MI") return f.mirror[static_cast<size_t>(axis)] ? 1.0 : 0.0;
   return std::nullopt;
+}
+
+// A FRAME variable's text as components (empty text: the null frame); false where it is no frame
+// drycut can read.
+bool read_frame_text(std::string_view text, double unit, FrameComponents& c) {
+  return text.empty() || c.assign(text, unit).empty();
 }
 
 }  // namespace
@@ -102,7 +101,7 @@ std::optional<double> InterpreterStateView::frame_component(std::string_view tex
   const double unit = interpreter_.state().inch ? 25.4 : 1.0;
   const int axis = detail::axis_index(axis_name);
   FrameComponents c;
-  if (axis < 0 || (!text.empty() && !c.assign(text, unit).empty())) return std::nullopt;
+  if (axis < 0 || !read_frame_text(text, unit, c)) return std::nullopt;
   return c.composed() ? component_of_matrix(c.frame(), axis, component, unit) : component_of(c, axis, component, unit);
 }
 
@@ -113,7 +112,7 @@ std::optional<std::string> InterpreterStateView::frame_with_component(std::strin
   const double unit = interpreter_.state().inch ? 25.4 : 1.0;
   const int axis = detail::axis_index(axis_name);
   FrameComponents c;
-  if (axis < 0 || (!text.empty() && !c.assign(text, unit).empty())) return std::nullopt;
+  if (axis < 0 || !read_frame_text(text, unit, c)) return std::nullopt;
   if (c.composed()) {
     const std::optional<FrameComponents> split = FrameComponents::of_product(c.frame());
     if (!split) return std::nullopt;

@@ -117,9 +117,10 @@ double CornerConstraint::max_velocity(const Junction& j) const {
   double v = kInf;
   const double ovl = std::min(j.before_dynamics.ovl_factor, j.after_dynamics.ovl_factor) - 1.0;
   const bool smoothed = extra_axes_smoothed(j);
+  const double l = smoothed ? smoothing_length(j) : 0.0;
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
     if (smoothed && gradual(dt, before, after))
-      v = std::min(v, std::sqrt(std::min(before.accel, after.accel) * smoothing_length(j) / dt));
+      v = std::min(v, std::sqrt(std::min(before.accel, after.accel) * l / dt));
     else
       v = std::min(v, std::min(before.raw_accel, after.raw_accel) * ovl * j.after_dynamics.ipo_cycle / dt);
   });
@@ -141,8 +142,8 @@ double TransitionJerkConstraint::max_velocity(const Junction& j) const {
   const double t = j.after_dynamics.ipo_cycle;
   double v = kInf;
   const bool smoothed = extra_axes_smoothed(j);
+  const double l = smoothed ? smoothing_length(j) : 0.0;
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-    const double l = smoothing_length(j);
     if (smoothed && gradual(dt, before, after))
       v = std::min(v, cube_root(std::min(before.jerk, after.jerk) * l * l / dt));
     else

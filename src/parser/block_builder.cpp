@@ -95,7 +95,7 @@ class ProgramLoader::BlockBuilder {
   // T="NAME" (tool management): T once per block, by name or number (T="A" M6 T="B": the
   // control refuses the block, as T1 T2).
   void tool_by_name(std::string name, uint32_t column) {
-    if (out_.tool_name || out_.find_address("T")) throw LineError(12000, column, "address T programmed twice in the block");
+    refuse_repeated("T", column);
     out_.tool_name = std::move(name);
     has_words_ = true;
   }

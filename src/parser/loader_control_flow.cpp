@@ -528,8 +528,7 @@ std::string ProgramLoader::condition_input() const {
 }
 
 std::string ProgramLoader::jump_awaited_input(uint32_t target_line) const {
-  if (system_variables_.input_reads() != input_reads_at_line_) return system_variables_.last_input_read();
-  if (parsed_.statement != Statement::Goto) return {};
+  if (std::string on_line = condition_input(); !on_line.empty() || parsed_.statement != Statement::Goto) return on_line;
   const auto& stack = frames_.back()->control;
   if (!stack.empty() && stack.back().kind == Statement::If && stack.back().head.line >= target_line)
     return stack.back().awaited_input;
