@@ -548,7 +548,8 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
   loop_state(loop_state_);
   next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
   const LoopGuard::Visit visit{system_variables_.view_reads(), system_variables_.input_reads(), work_blocks_,
-                               dwell_blocks_, system_variables_.clock_reads(), !awaited.empty()};
+                               dwell_blocks_, system_variables_.clock_reads(), system_variables_.process_reads(),
+                               !awaited.empty()};
   switch (loop_guard_.repeats(site, loop_state_, visit)) {
     case LoopGuard::Repeat::No:
       return false;

@@ -14,14 +14,19 @@ LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, co
   // action's variable) is what ends it on the machine.
   if (r.visits > 0 && r.state == state && r.input_reads != v.input_reads && r.last_clock_reads == v.clock_reads)
     return Repeat::WaitsOnInput;
-  if (v.decided_by_input && r.visits > 0 && r.last_work_blocks == v.work_blocks &&
-      r.last_dwell_blocks != v.dwell_blocks && r.last_input_reads != v.input_reads)
-    return Repeat::WaitsOnInput;  // a wait with a timeout counter beside the input
+  // A wait with a timeout beside the input: the pass dwelled or polled a timer, did no work and
+  // polled no process value (that loop waits for the process).
+  const bool waited = (r.last_dwell_blocks != v.dwell_blocks || r.last_clock_reads != v.clock_reads) &&
+                      r.last_process_reads == v.process_reads;
+  if (v.decided_by_input && r.visits > 0 && r.last_work_blocks == v.work_blocks && waited &&
+      r.last_input_reads != v.input_reads)
+    return Repeat::WaitsOnInput;
   if (r.visits > 0 && r.reads == v.reads && r.state == state) return Repeat::Endless;
   r.last_work_blocks = v.work_blocks;
   r.last_dwell_blocks = v.dwell_blocks;
   r.last_clock_reads = v.clock_reads;
   r.last_input_reads = v.input_reads;
+  r.last_process_reads = v.process_reads;
   if (++r.visits == r.next_save) {
     r.state = state;
     r.reads = v.reads;

@@ -26,9 +26,12 @@
 // when the pass since the last visit dwelled (G4) and did nothing else a block carries (no axis,
 // no M function, no S): on the machine the signal ends it. A loop that computes without
 // dwelling (counting set inputs, testing bits of $A_DBB) or works (cuts, spindle steps of a
-// warm-up with an abort input) runs its passes. A pass that polled the clock or the spindle's
-// actual speed waits for time as well (WHILE ($AA_S<7900) AND ($A_IN[3]==0)): it runs on until
-// that ends it.
+// warm-up with an abort input) runs its passes. A pass that polled a timer and the input and
+// did nothing else (WHILE ($A_IN[9]==0) AND ($AC_TIMER[1]<10) ENDWHILE) is the same wait with its
+// timeout on the clock: it ends the same way (before 2026-11-28 it waited its full timeout and a
+// check after it stopped the run). A pass that polled a process value (the spindle's actual
+// speed: WHILE ($AA_S<7900) AND ($A_IN[3]==0)) waits for that process: it runs on until the
+// value ends it, the input being the abort.
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -44,6 +47,7 @@ class LoopGuard {
     uint64_t work_blocks = 0;    // running count of blocks that move axes, program M or S
     uint64_t dwell_blocks = 0;   // running count of G4 blocks
     uint64_t clock_reads = 0;    // running count of reads that let the clock run ($AC_TIMER, $AA_S)
+    uint64_t process_reads = 0;  // of those, reads of a process value ($AA_S), not of a timer
     bool decided_by_input = false;
   };
   // WaitsOnInput when `state` at `site` equals the saved one and inputs were read since, or
@@ -62,6 +66,7 @@ class LoopGuard {
     uint64_t last_dwell_blocks = 0;
     uint64_t last_clock_reads = 0;
     uint64_t last_input_reads = 0;
+    uint64_t last_process_reads = 0;
   };
   std::unordered_map<uint64_t, Record> sites_;
 };

@@ -79,7 +79,10 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   }
   // The actual spindle speed follows its run-up ramp in time: a poll of it lets the clock run, as
   // a poll of the clock does (a warm-up loop waits for the speed).
-  if (name == "$AA_S" && view_) poll_clock();
+  if (name == "$AA_S" && view_) {
+    ++process_reads_;
+    poll_clock();
+  }
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? poll_clock() : 0.0)), false};

@@ -101,6 +101,9 @@ class SystemVariables {
   // How many reads let the clock run so far ($AC_TIMER, the run clock, $AA_S): a loop that polls
   // them waits for time, not only for an input it reads besides.
   uint64_t clock_reads() const { return clock_reads_; }
+  // Of those, how many were of a process value that reaches its end by itself ($AA_S runs up to
+  // the set speed), not of a timer that only measures a timeout.
+  uint64_t process_reads() const { return process_reads_; }
   // A wait on `key` ended (the loop guard took the signal as come): a digital input ($A_IN[n])
   // reads its other value from now on. Other data (bytes, words) have no one awaited value.
   void input_arrived(const std::string& key);
@@ -124,6 +127,7 @@ class SystemVariables {
   mutable uint64_t input_reads_ = 0;
   mutable uint64_t main_run_reads_ = 0;
   mutable uint64_t clock_reads_ = 0;
+  mutable uint64_t process_reads_ = 0;
   double poll_clock() const {
     ++clock_reads_;
     return view_ ? view_->poll_clock(line_) : 0.0;
