@@ -552,9 +552,19 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
                                !awaited.empty()};
   switch (loop_guard_.repeats(site, loop_state_, visit)) {
     case LoopGuard::Repeat::No:
+      system_variables_.forget_settled_read();  // only a read of the pass that repeats is named
       return false;
-    case LoopGuard::Repeat::Endless:
-      raise(990004, "back at line " + std::to_string(f.reader.tell().line) + " with every variable unchanged", 0);
+    case LoopGuard::Repeat::Endless: {
+      // A poll of the actual spindle speed that no longer changes: the speed the loop waits for
+      // is beyond what the spindle reaches (its limits), which the alarm names.
+      const std::string& settled = system_variables_.settled_read();
+      raise(990004,
+            "back at line " + std::to_string(f.reader.tell().line) + " with every variable unchanged" +
+                (settled.empty() ? std::string()
+                                 : " (" + settled + ": the spindle does not reach the speed the loop waits for; its "
+                                                    "limits are MD35100 max_spindle_speed_rpm, G26 and LIMS)"),
+            0);
+    }
     case LoopGuard::Repeat::WaitsOnInput:
       // On the machine the PLC or the process changes the input and the wait ends; a dry run
       // has neither, so the wait ends at once and takes no time (docs/controller-state.md).

@@ -77,12 +77,7 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     ++view_reads_;
     return {Value(view_ ? view_->cutting_time_s() : 0.0), false};
   }
-  // The actual spindle speed follows its run-up ramp in time: a poll of it lets the clock run, as
-  // a poll of the clock does (a warm-up loop waits for the speed).
-  if (name == "$AA_S" && view_) {
-    ++process_reads_;
-    poll_clock();
-  }
+  if (name == "$AA_S" && view_) return read_actual_spindle_speed(name, indices, key);
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? poll_clock() : 0.0)), false};
@@ -104,6 +99,31 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   // The loader alone (no interpreter behind it) reads state as 0, silently.
   if (!view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) return {Value(0.0), false};
   return {Value(0.0), true};
+}
+
+SystemVariables::ReadResult SystemVariables::read_actual_spindle_speed(std::string_view name,
+                                                                      std::span<const Value> indices,
+                                                                      const std::string& key) const {
+  // The actual speed follows its run-up ramp in time: a poll of it lets the clock run, as a poll
+  // of the clock does (a warm-up loop waits for the speed). Once it reads what it read at the
+  // last poll the ramp is over and the speed stays until a block changes it: that read neither
+  // reads changing state nor lets time count for the loop guard, so a loop waiting for a speed
+  // the spindle never reaches (above MD35100, G26 or LIMS) is the endless loop it is on the
+  // machine (alarm 990004 at once, not after 10^8 lines).
+  poll_clock();
+  ++process_reads_;
+  ++view_reads_;
+  const auto v = view_->read_system_variable(name, indices);
+  if (!v) return {Value(0.0), true};
+  auto [last, first] = last_process_values_.try_emplace(key, v->number);
+  if (!first && last->second == v->number) {
+    --clock_reads_;
+    --process_reads_;
+    --view_reads_;
+    settled_read_ = key + " stays at " + as_text(*v);
+  }
+  last->second = v->number;
+  return {*v, false};
 }
 
 void SystemVariables::write(std::string_view name, std::span<const Value> indices, const Value& v) {

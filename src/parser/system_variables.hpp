@@ -104,6 +104,10 @@ class SystemVariables {
   // Of those, how many were of a process value that reaches its end by itself ($AA_S runs up to
   // the set speed), not of a timer that only measures a timeout.
   uint64_t process_reads() const { return process_reads_; }
+  // The last poll of a process value that read what it read before ("$AA_S[1] stays at 10000"),
+  // for the endless-loop alarm's text; empty when there was none.
+  const std::string& settled_read() const { return settled_read_; }
+  void forget_settled_read() { settled_read_.clear(); }
   // A wait on `key` ended (the loop guard took the signal as come): a digital input ($A_IN[n])
   // reads its other value from now on. Other data (bytes, words) have no one awaited value.
   void input_arrived(const std::string& key);
@@ -128,6 +132,10 @@ class SystemVariables {
   mutable uint64_t main_run_reads_ = 0;
   mutable uint64_t clock_reads_ = 0;
   mutable uint64_t process_reads_ = 0;
+  mutable MachineDataMap last_process_values_;  // $AA_S[n] at its last poll
+  mutable std::string settled_read_;             // the last such poll that read the same again
+  ReadResult read_actual_spindle_speed(std::string_view name, std::span<const Value> indices,
+                                       const std::string& key) const;
   double poll_clock() const {
     ++clock_reads_;
     return view_ ? view_->poll_clock(line_) : 0.0;
