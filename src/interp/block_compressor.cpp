@@ -32,7 +32,7 @@ bool compressible_line(const PathElement& e) {
 }  // namespace
 
 BlockCompressor::BlockCompressor(ElementSink& next, const machine::MachineProfile& profile)
-    : next_(next), profile_(profile) {}
+    : next_(next), profile_(profile), linearity_(profile) {}
 
 geometry::CompressorFitOptions BlockCompressor::fit_options(const machine::MachineProfile& profile, Compressor mode) {
   const machine::CompressorData& c = profile.compressor;
@@ -80,16 +80,37 @@ void BlockCompressor::start_run(const PathElement& e) {
 
 void BlockCompressor::consume(PathElement&& element) {
   if (joins_run(element)) {
-    if (element.curve->length() > 0.0) points_.push_back(element.curve->end());
+    const double length = element.curve->length();
+    if (!linearity_.extend(element, length)) {
+      // A further axis changes its rate along the path beyond MD33100: the run is cut here and
+      // goes on from its last point with its tangent (extra_axis_linearity.hpp).
+      flush(true);
+      linearity_.restart();
+      if (!joins_run(element) || !linearity_.extend(element, length)) {
+        flush(false);
+        start_or_pass(std::move(element));
+        return;
+      }
+    }
+    if (length > 0.0) points_.push_back(element.curve->end());
     point_of_.push_back(points_.size() - 1);
     elements_.push_back(std::move(element));
-    if (points_.size() > static_cast<size_t>(profile_.compressor.flush_points)) flush(true);
+    if (points_.size() > static_cast<size_t>(profile_.compressor.flush_points)) {
+      flush(true);
+      linearity_.restart();
+    }
     return;
   }
   flush(false);
+  start_or_pass(std::move(element));
+}
+
+void BlockCompressor::start_or_pass(PathElement&& element) {
   if (compressible_line(element) && element.curve->length() > 0.0 &&
       element.curve->length() <= profile_.compressor.block_path_limit_mm) {
     start_run(element);
+    linearity_.restart();
+    linearity_.extend(element, element.curve->length());  // the first block always fits its line
     points_.push_back(element.curve->end());
     point_of_.push_back(1);
     elements_.push_back(std::move(element));

@@ -10,6 +10,9 @@
 //   - is not longer than MD20170 COMPRESS_BLOCK_PATH_LIMIT,
 //   - keeps F within MD20172 COMPRESS_VELO_TOL of the run's first block,
 //   - keeps the dynamics mode (G60/G64..., BRISK/SOFT) and starts where the run ends.
+// A run whose further axes (A, C ...) leave a straight line over path length by more than their
+// MD33100 is cut there and goes on from its last point with its tangent, as at a window cut
+// (extra_axis_linearity.hpp): a span moves those axes linearly.
 // Anything else ends the run: it is fitted and handed on, then the element follows.
 // Memory stays bounded: a run that reaches `flush_points` points (profile, drycut's choice) is
 // fitted and handed on at once; the next window starts at its last point with its end tangent,
@@ -19,6 +22,7 @@
 #include <optional>
 #include <vector>
 
+#include "interp/extra_axis_linearity.hpp"
 #include "interp/geometry/compressor_fit.hpp"
 #include "interp/path_element.hpp"
 #include "machine/machine_profile.hpp"
@@ -38,6 +42,8 @@ class BlockCompressor final : public ElementSink {
  private:
   bool joins_run(const PathElement& element) const;
   void start_run(const PathElement& first);
+  // Starts a run with `element` when it can begin one, else hands it on.
+  void start_or_pass(PathElement&& element);
   // Fits the run and hands on its elements in order. carry: the run goes on from its last
   // point (a window cut, `flush_points`); else it is closed.
   void flush(bool carry);
@@ -59,6 +65,7 @@ class BlockCompressor final : public ElementSink {
   DynamicsMode run_dynamics_;
   SmoothingRequest run_tolerances_;  // CTOL/ATOL of the run's first block
   std::vector<geometry::FittedSpan> spans_;  // reused
+  ExtraAxisLinearity linearity_;  // the further axes since the run's start or last cut
 };
 
 }  // namespace drycut::interp

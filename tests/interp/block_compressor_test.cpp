@@ -87,22 +87,98 @@ TEST(BlockCompressor, CentreFeedRatiosOfCompensatedBlocksDoNotBreakTheRun) {
 }
 
 TEST(BlockCompressor, FurtherAxesOfTheBlocksMoveWithTheirSpan) {
-  // Ten compressible blocks, each turning C by 0.5 deg and blocks 5..10 A by 1 deg: the span that
-  // replaces them starts C where the first block found it (30) and turns it 10 x 0.5 = 5 deg, A
-  // from where block 5 found it (0) by 6 x 1 = 6 deg.
+  // Ten compressible 1 mm blocks, each turning C by 0.5 deg: one span turns C from where the
+  // first block found it (30) by 10 x 0.5 = 5 deg.
+  const auto m = compressed_ten_blocks([](PathElement& c, int k) {
+    c.extra_axes.push_back({5, "C", 30.0 + 0.5 * k, 0.5, false});
+  });
+  ASSERT_EQ(m.size(), 2u);
+  ASSERT_EQ(m[1].compressed_blocks, 10u);
+  ASSERT_EQ(m[1].extra_axes.size(), 1u);
+  EXPECT_EQ(m[1].extra_axes[0].name, "C");
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[0].start, 30.0);
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[0].travel, 5.0);
+}
+
+TEST(BlockCompressor, AFurtherAxisChangingItsRateCutsTheRunWhereItChanges) {
+  // C turns 0.5 deg/mm throughout; A stands for blocks 1..4 and turns 1 deg/mm from block 5 on.
+  // A span moves its axes linearly along its path: one span over all ten blocks would turn A at
+  // 0.6 deg/mm from X0, 2.4 deg away from the programmed A0 at X4, far beyond MD33100 (0.1 deg,
+  // the default). The line from X0 through block 5's end (A1 at X5, 0.2 deg/mm) misses A0 at X4
+  // by 0.8 deg, so the run is cut after block 4: span X0..X4 turns C 2 deg from 30 (A stands),
+  // span X4..X10 turns C 3 deg from 32 and A 6 deg from 0, each at its programmed rate.
   const auto m = compressed_ten_blocks([](PathElement& c, int k) {
     c.extra_axes.push_back({5, "C", 30.0 + 0.5 * k, 0.5, false});
     if (k >= 4) c.extra_axes.push_back({3, "A", 1.0 * (k - 4), 1.0, false});
   });
-  ASSERT_EQ(m.size(), 2u);
-  ASSERT_EQ(m[1].compressed_blocks, 10u);
-  ASSERT_EQ(m[1].extra_axes.size(), 2u);
-  EXPECT_EQ(m[1].extra_axes[0].name, "C");
+  ASSERT_EQ(m.size(), 3u);
+  EXPECT_EQ(m[1].compressed_blocks, 4u);
+  ASSERT_EQ(m[1].extra_axes.size(), 1u);
   EXPECT_DOUBLE_EQ(m[1].extra_axes[0].start, 30.0);
-  EXPECT_DOUBLE_EQ(m[1].extra_axes[0].travel, 5.0);
-  EXPECT_EQ(m[1].extra_axes[1].name, "A");
-  EXPECT_DOUBLE_EQ(m[1].extra_axes[1].start, 0.0);
-  EXPECT_DOUBLE_EQ(m[1].extra_axes[1].travel, 6.0);
+  EXPECT_DOUBLE_EQ(m[1].extra_axes[0].travel, 2.0);
+  EXPECT_EQ(m[2].compressed_blocks, 6u);
+  ASSERT_EQ(m[2].extra_axes.size(), 2u);
+  EXPECT_EQ(m[2].extra_axes[0].name, "C");
+  EXPECT_DOUBLE_EQ(m[2].extra_axes[0].start, 32.0);
+  EXPECT_DOUBLE_EQ(m[2].extra_axes[0].travel, 3.0);
+  EXPECT_EQ(m[2].extra_axes[1].name, "A");
+  EXPECT_DOUBLE_EQ(m[2].extra_axes[1].start, 0.0);
+  EXPECT_DOUBLE_EQ(m[2].extra_axes[1].travel, 6.0);
+  // The XY path goes on tangent-continuous across the cut.
+  EXPECT_LT((m[1].curve->at(m[1].curve->length()).tangent - m[2].curve->at(0).tangent).norm(), 1e-9);
+}
+
+TEST(BlockCompressor, ASuddenRotaryTurnInsideARunKeepsItsOwnRate) {
+  // C turns 0.2 deg/mm, except in block 6 (8 deg/mm): its own span, so the planner sees 8 deg/mm
+  // there and not the average of a span (before 2026-11-28: one span at (9 x 0.2 + 8)/10 =
+  // 0.98 deg/mm). Each cut is where the line from the stretch's start misses a programmed point by
+  // more than MD33100 (0.1 deg): the line from X0 through block 6's end (C 9 at X6, 1.5 deg/mm)
+  // passes 6.5 deg from C 1 at X5; the line from X5 through block 7's end (C 8.2 at X7) passes
+  // 3.9 deg from C 8 at X6. Block 6 alone is no run: it stays the G1 block it is.
+  const auto m = compressed_ten_blocks([](PathElement& c, int k) {
+    const double turn = k == 5 ? 8.0 : 0.2;
+    c.extra_axes.push_back({5, "C", 0.0, turn, false});
+  });
+  ASSERT_EQ(m.size(), 4u);
+  EXPECT_EQ(m[1].compressed_blocks, 5u);
+  EXPECT_EQ(m[2].kind, ElementKind::Line);
+  EXPECT_DOUBLE_EQ(m[2].extra_axes[0].travel, 8.0);
+  EXPECT_NEAR(m[2].curve->length(), 1.0, 1e-9);
+  EXPECT_EQ(m[3].compressed_blocks, 4u);
+}
+
+TEST(BlockCompressor, ARotaryRateChangingWithinItsToleranceStaysOneSpan) {
+  // C(x) = 0.001 x^3 over ten 1 mm blocks: the straight line from (0, 0) to (10, 1) misses the
+  // cubic by at most 0.385 deg (at x = 5.77); with MD33100 = 0.5 deg the run stays whole, with
+  // 0.1 deg it is cut.
+  auto cubic = [](PathElement& c, int k) {
+    const auto at = [](int x) { return 0.001 * x * x * x; };
+    c.extra_axes.push_back({0, "C", at(k), at(k + 1) - at(k), false});
+  };
+  auto profile = testing::test_profile();
+  machine::AxisData c_axis;
+  c_axis.name = "C";
+  c_axis.compress_pos_tol_mm = 0.5;
+  profile.extra_axes = {c_axis};
+  auto run = testing::run_program("G0 X0 Y0 Z0\nG64 COMPCAD F3000\n" + x_blocks(1, 10) + "M30\n", profile);
+  ASSERT_FALSE(run->alarm);
+  for (double tol : {0.5, 0.1}) {
+    profile.extra_axes[0].compress_pos_tol_mm = tol;
+    CollectingSink out;
+    BlockCompressor stage(out, profile);
+    int k = 0;
+    for (auto& e : run->sink.elements) {
+      PathElement c(e);
+      if (c.is_motion() && !c.rapid) cubic(c, k++);
+      stage.consume(std::move(c));
+    }
+    stage.finish();
+    if (tol == 0.5) {
+      EXPECT_EQ(out.motions().size(), 2u);
+    } else {
+      EXPECT_GT(out.motions().size(), 2u);
+    }
+  }
 }
 
 TEST(BlockCompressor, ALongRunIsFlushedInWindowsAndStaysTangentContinuous) {
