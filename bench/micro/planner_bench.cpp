@@ -24,7 +24,7 @@ interp::PathElement cutting_element(geometry::CurvePtr curve, double feed_mm_min
   e.dynamics.transition = interp::TransitionMode::Continuous;
   e.dynamics.profile = interp::AccelProfile::Soft;
   e.label = "G1";
-  e.source.file = std::make_shared<const std::string>("BENCH.MPF");
+  e.source.file = intern_file_name("BENCH.MPF");
   return e;
 }
 

@@ -20,7 +20,7 @@ void run_report_rows(benchmark::State& state) {
   {
     report::RunReportWriter writer(out, layout, "/home/shop/programs/PART_4711.MPF", "MCV 1210");
     motion::BlockTiming t;
-    t.source.file = std::make_shared<const std::string>("/home/shop/programs/PART_4711.MPF");
+    t.source.file = intern_file_name("/home/shop/programs/PART_4711.MPF");
     t.label = "G1";
     t.limit = motion::Limit::ShortBlock;
     uint32_t line = 0;

@@ -255,7 +255,7 @@ class Planner : public interp::ElementSink {
   void stop_path(const interp::PathElement& pause);  // flush() before a pause element
   double dwell_time(const interp::PathElement& e) const;
   bool block_known_ = false;
-  std::shared_ptr<const std::string> block_file_;
+  FileName block_file_ = nullptr;
   uint32_t block_line_ = 0;
 };
 

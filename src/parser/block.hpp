@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "parser/value.hpp"
+#include "machine/source_location.hpp"
 
 namespace drycut::parser {
 
@@ -103,7 +104,7 @@ struct PolyWord {
 enum class ModalSave : uint8_t { None, Save, Restore };
 
 struct Block {
-  std::shared_ptr<const std::string> file;  // shared by all blocks of one file
+  FileName file = nullptr;  // interned: the same pointer for all blocks of one file
   uint32_t line = 0;
   std::string text;                // the block as written, trimmed, decoded to UTF-8
   std::optional<int64_t> number;   // N123 or :123
@@ -123,7 +124,7 @@ struct Block {
 
   // Empties the block but keeps the vectors' capacity (the loader reuses one Block).
   void clear() {
-    file.reset();
+    file = nullptr;
     line = 0;
     text.clear();
     number.reset();

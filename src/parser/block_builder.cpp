@@ -20,11 +20,10 @@ class ProgramLoader::BlockBuilder {
   BlockBuilder(ProgramLoader& loader, Block& out) : l_(loader), out_(out), f_(*loader.frames_.back()) {}
 
   bool build() {
-    // The file pointer outlives clear(): most blocks come from the file of the one before, and
-    // an unchanged shared_ptr costs no atomic reference-count change (finish()).
-    std::shared_ptr<const std::string> file = std::move(out_.file);
+    // The file outlives clear(): blocks come from the file of the one before.
+    const FileName file = out_.file;
     out_.clear();
-    out_.file = std::move(file);
+    out_.file = file;
     for (const Item& item : l_.parsed_.items) {
       switch (item.kind) {
         case ItemKind::G: g_word(item, item.code); break;

@@ -506,7 +506,7 @@ void ProgramLoader::loop_state(std::string& out) const {
   out.clear();
   auto put = [&out](const auto& v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
   for (const auto& frame : frames_) {
-    put(frame->file.get());
+    put(frame->file);
     put(frame->reader.tell().offset);
     put(frame->passes_left);
     for (const auto& c : frame->control) {
@@ -544,7 +544,7 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
   if (steps_ < next_loop_check_) return false;
   const Frame& f = *frames_.back();
   // The site: where the jump goes, in which program at which depth.
-  const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file.get())) * 17 + frames_.size();
+  const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file)) * 17 + frames_.size();
   loop_state(loop_state_);
   next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
   const LoopGuard::Visit visit{system_variables_.view_reads(), system_variables_.input_reads(), work_blocks_,

@@ -168,7 +168,7 @@ void ProgramLoader::read_definition_file(const std::filesystem::path& file) {
   // %_N_NAME_DEF header); everything else in it is ignored with a warning.
   auto frame = std::make_unique<Frame>();
   if (!frame->reader.open(file)) return;
-  frame->file = std::make_shared<const std::string>(file.string());
+  frame->file = intern_file_name(file.string());
   frames_.push_back(std::move(frame));
   Frame& f = *frames_.back();
   while (f.reader.next(raw_)) {

@@ -3,6 +3,7 @@
 // the open control structures and REPEAT sections inside it.
 #include <string>
 #include <unordered_map>
+#include "machine/source_location.hpp"
 #include <vector>
 
 #include "parser/expression_evaluator.hpp"
@@ -29,7 +30,7 @@ struct ProgramLoader::RepeatSection {
 };
 
 struct ProgramLoader::Frame {
-  std::shared_ptr<const std::string> file;  // as shown in alarms
+  FileName file = nullptr;  // as shown in alarms
   std::string program;                      // upper-case program name
   LineReader reader;
   // Where the program's first line is: 0, or in an archive file holding several programs the

@@ -62,7 +62,7 @@ void ProgramLoader::open_main(const std::filesystem::path& path) {
   auto frame = std::make_unique<Frame>();
   if (!frame->reader.open(path)) throw UsageError("cannot open program '" + path.string() + "'");
   start_at_own_header(*frame);
-  frame->file = std::make_shared<const std::string>(path.string());
+  frame->file = intern_file_name(path.string());
   frame->program = normalize_program_name(path.stem().string() + path.extension().string()).name;
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::vector<std::filesystem::path> dirs{folder};
@@ -345,7 +345,7 @@ void ProgramLoader::call_program(const std::string& written_name, uint64_t passe
   auto frame = std::make_unique<Frame>();
   if (!frame->reader.open(*path)) raise(990005, path->string(), column);
   start_at_own_header(*frame);
-  frame->file = std::make_shared<const std::string>(path->string());
+  frame->file = intern_file_name(path->string());
   push_called_frame(std::move(frame), name.name, passes);
 }
 

@@ -199,7 +199,7 @@ class ProgramLoader {
   Diagnostics& diagnostics_;
   std::unique_ptr<ProgramFiles> files_;
   struct ArchivedProgram {
-    std::shared_ptr<const std::string> file;
+    FileName file = nullptr;
     ArchiveSection section;
   };
   // Programs looked for in open archive files, by "NAME.EXT" (nullopt: in none of them).

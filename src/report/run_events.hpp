@@ -54,7 +54,7 @@ class RunEventRecorder : public motion::PlanObserver {
   std::string main_file_;
   // The file of the last block and whether it is a called program's: compared by name only when
   // the file changes (held, so that its address is not taken by another file's name meanwhile).
-  std::shared_ptr<const std::string> last_file_;
+  FileName last_file_ = nullptr;
   bool last_in_call_ = false;
   double clock_s_ = 0;
   bool m0_seen_ = false;

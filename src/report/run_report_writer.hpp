@@ -67,7 +67,7 @@ class RunReportWriter : public motion::PlanObserver {
   std::vector<std::string> files_;
   std::unordered_map<std::string, size_t> file_ids_;
   // The previous row's shared file name, held so that its address cannot be reused by another.
-  std::shared_ptr<const std::string> last_file_;
+  FileName last_file_ = nullptr;
   size_t last_file_id_ = 0;
   std::unordered_map<std::string, std::string> labels_;  // label -> its JSON string
 };

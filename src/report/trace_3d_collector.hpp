@@ -33,7 +33,7 @@ struct TracePoint {
 };
 
 struct TraceBlock {
-  std::shared_ptr<const std::string> file;
+  FileName file = nullptr;
   uint32_t line = 0;
   std::string text;
   double feed_mm_s = 0;  // programmed F handed to the planner (tool centre); 0 for rapids

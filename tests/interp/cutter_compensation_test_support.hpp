@@ -31,8 +31,8 @@ struct CollectingSink : interp::ElementSink {
   }
 };
 
-inline const std::shared_ptr<const std::string>& test_file() {
-  static const auto file = std::make_shared<const std::string>("TEST.MPF");
+inline FileName test_file() {
+  static const FileName file = intern_file_name("TEST.MPF");
   return file;
 }
 

@@ -25,7 +25,7 @@ Trace3d two_point_trace() {
   b.x = 2, b.y = 3, b.z = 4, b.t = 1.5, b.v = 2.5, b.block = 1;
   t.points = {a, b};
   TraceBlock r;
-  r.file = std::make_shared<const std::string>("/some/dir/MAIN.MPF");
+  r.file = intern_file_name("/some/dir/MAIN.MPF");
   r.line = 4, r.text = "N40 G0 Z5", r.rapid = true;
   TraceBlock c;
   c.file = r.file;

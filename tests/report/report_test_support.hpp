@@ -9,8 +9,8 @@
 
 namespace drycut::report::test {
 
-inline const std::shared_ptr<const std::string>& test_file() {
-  static const auto f = std::make_shared<const std::string>("/tmp/TEST.MPF");
+inline FileName test_file() {
+  static const FileName f = intern_file_name("/tmp/TEST.MPF");
   return f;
 }
 

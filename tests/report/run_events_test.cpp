@@ -10,11 +10,11 @@
 namespace drycut::report {
 namespace {
 
-const auto kMain = std::make_shared<const std::string>("MAIN.MPF");
-const auto kSubA = std::make_shared<const std::string>("A.SPF");
-const auto kSubB = std::make_shared<const std::string>("B.SPF");
+const FileName kMain = intern_file_name("MAIN.MPF");
+const FileName kSubA = intern_file_name("A.SPF");
+const FileName kSubB = intern_file_name("B.SPF");
 
-motion::BlockTiming block(const std::shared_ptr<const std::string>& file, const char* label, double t, bool after_m0) {
+motion::BlockTiming block(FileName file, const char* label, double t, bool after_m0) {
   motion::BlockTiming b;
   b.source.file = file;
   b.label = label;
