@@ -418,10 +418,32 @@ void ProgramLoader::push_called_frame(std::unique_ptr<Frame> frame, const std::s
   frames_.push_back(std::move(frame));
 }
 
+namespace {
+
+// Axis words that are values, not a motion: a pole (G110..G112), an axial offset (G58/G59), a
+// working-area limit (G25/G26) or a frame statement takes them (Fundamentals: each stands in a
+// block of its own), so such a block calls no MCALL (before 2026-11-28 a polar bolt circle's
+// G111 or an ATRANS drilled the last hole again).
+bool axis_words_are_values(const Block& block) {
+  for (const GWord& g : block.g)
+    if (g.code == 110 || g.code == 111 || g.code == 112 || g.code == 58 || g.code == 59 || g.code == 25 ||
+        g.code == 26)
+      return true;
+  static constexpr std::string_view kFrameStatements[] = {"TRANS", "ATRANS", "ROT",    "AROT",    "ROTS",
+                                                           "AROTS", "SCALE",  "ASCALE", "MIRROR", "AMIRROR"};
+  for (const CommandWord& c : block.commands)
+    if (std::find(std::begin(kFrameStatements), std::end(kFrameStatements), c.name) != std::end(kFrameStatements))
+      return true;
+  return false;
+}
+
+}  // namespace
+
 void ProgramLoader::schedule_modal_call(const Block& block) {
   if (pending_ != PendingAction::None) return;  // the block calls or ends itself
   for (const auto& f : frames_)
     if (f->modal_call) return;
+  if (axis_words_are_values(block)) return;
   const bool moves = std::any_of(block.addresses.begin(), block.addresses.end(), [](const AddressWord& a) {
     const std::string_view n = a.name;
     if (n == "AP" || n == "RP") return true;
