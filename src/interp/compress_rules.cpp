@@ -16,8 +16,8 @@ bool is_simple_block(const parser::Block& block, const ExtraAxes& extra_axes) {
     const std::string_view n = a.name;  // compared with literals by length first, not a memcmp each
     // Positions of the geometry axes and of the machine's further path axes (rotary A/C of a
     // 5-axis machine: Job Planning lists `X Y Z A B C F` blocks as compressible).
-    const bool position = axis_index(n) >= 0 || extra_axes.index(n) >= 0;
-    if (!position && n != "F" && !is_orientation_word(n)) return false;
+    const bool allowed = n == "F" || axis_index(n) >= 0 || extra_axes.index(n) >= 0 || is_orientation_word(n);
+    if (!allowed) return false;
     if (a.mode != parser::ValueMode::Default && a.mode != parser::ValueMode::Absolute &&
         a.mode != parser::ValueMode::Incremental)
       return false;

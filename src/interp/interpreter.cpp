@@ -90,7 +90,9 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
     warn_once(ctx, "POS/POSA of a geometry axis in a block with path axes (it moves with the path, at the path feed)", 0);
   if (geometry_positioning == GeometryPositioning::AloneAsync)
     warn_once(ctx, "POSA of a geometry axis (planned as POS: the program waits for the axis instead of running on)", 0);
-  ctx.simple = is_simple_block(block, extra_axes_);
+  // Only a compressor asks (a block that selects one is no simple block itself), and the test
+  // runs on every block.
+  ctx.simple = state_.compressor != Compressor::Off && is_simple_block(block, extra_axes_);
   ctx.compensation_before = state_.compensation;
   if (clock_wait_s_ > 0) emit_clock_wait(ctx);
   if (block.main_run_read) {

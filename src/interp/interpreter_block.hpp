@@ -165,7 +165,7 @@ struct Interpreter::BlockContext {
   uint32_t corner_column = 0;
   double frc = 0.0;
   bool corner_used = false;  // request_corner took the block's words
-  bool simple = false;  // a block the compressor may join: nothing but G1, X/Y/Z and F (compress_rules.cpp)
+  bool simple = false;  // a block the active compressor may join: nothing but G1, X/Y/Z and F (compress_rules.cpp); false while none is active
   GeometryPositioning geometry_positioning = GeometryPositioning::None;  // POS/POSA of X/Y/Z
 
  private:
