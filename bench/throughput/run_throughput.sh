@@ -6,7 +6,8 @@
 # Usage: bench/throughput/run_throughput.sh [drycut] [earlier drycut] [figures file]
 #   With an earlier binary (e.g. built from the commit before a change) both run on the same
 #   files, alternating, REPS times; the table shows medians of the CPU time (user + system:
-#   the one-core rate even on a loaded machine) and the planned times of both (they must agree).
+#   the one-core rate even on a loaded machine), of the wall time (what a user waits: drycut
+#   plans on two threads) and the planned times of both (they must agree).
 # Environment: BLOCKS=1000000, BIG=10000000 (G1 SOFT, peak RSS; 0 skips), REPS=3,
 #              KINDS="g1 g1brisk rs274 arcs arcs_rs274 aspline bspline cspline",
 #              PEER=1 (0 skips rs274), WORK=/tmp/drycut_throughput
@@ -47,19 +48,22 @@ program() {
   echo "$f"
 }
 
-# measure COMMAND... -> "cpu_s rss_mb planned_s exit" (planned: drycut's "  time  " line)
+# measure COMMAND... -> "cpu_s rss_mb planned_s exit wall_s" (planned: drycut's "  time  " line).
+# drycut interprets and plans on two threads (src/interp/pipelined_sink.hpp), so its wall time
+# is what a user waits and its CPU time the one-core work; rs274 runs on one thread.
 measure() {
   local rc=0
-  /usr/bin/time -f "%U %S %M" -o "$WORK/time.txt" "$@" > "$WORK/stdout.txt" 2> "$WORK/stderr.txt" || rc=$?
+  /usr/bin/time -f "%U %S %M %e" -o "$WORK/time.txt" "$@" > "$WORK/stdout.txt" 2> "$WORK/stderr.txt" || rc=$?
   local planned
   planned=$(awk '/^  time  / { print $2; exit }' "$WORK/stdout.txt")
-  awk -v p="${planned:--}" -v rc="$rc" '{ printf "%.3f %.1f %s %d\n", $1 + $2, $3 / 1024, p, rc }' "$WORK/time.txt"
+  awk -v p="${planned:--}" -v rc="$rc" '{ printf "%.3f %.1f %s %d %.3f\n", $1 + $2, $3 / 1024, p, rc, $4 }' "$WORK/time.txt"
 }
 
 median() { tr ' ' '\n' | grep . | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 row() {  # kind label file
   local kind=$1 label=$2 f=$3 now="" before="" peer="" rss=0 planned_now=- planned_before=- fails=0
+  local now_wall="" before_wall="" peer_wall=""
   local peer_file=""
   case $kind in g1|g1brisk|rs274) peer_file=$(program rs274 "$BLOCKS") ;; arcs|arcs_rs274) peer_file=$(program arcs_rs274 "$BLOCKS") ;; esac
   for ((r = 0; r < REPS; r++)); do
@@ -68,37 +72,44 @@ row() {  # kind label file
     ((r % 2)) && order="before now"
     for who in $order; do
       if [ "$who" = now ]; then
-        read -r c m p rc < <(measure "$DRYCUT" run -q "$f"); now="$now $c"; rss=$m; planned_now=$p
+        read -r c m p rc w < <(measure "$DRYCUT" run -q "$f"); now="$now $c"; now_wall="$now_wall $w"; rss=$m; planned_now=$p
       elif [ -n "$BEFORE" ]; then
-        read -r c m p rc < <(measure "$BEFORE" run -q "$f"); before="$before $c"; planned_before=$p
+        read -r c m p rc w < <(measure "$BEFORE" run -q "$f"); before="$before $c"; before_wall="$before_wall $w"; planned_before=$p
       fi
       [ "$rc" -gt 1 ] && fails=$((fails + 1))
     done
     if [ "$PEER" = 1 ] && [ -n "$peer_file" ]; then
-      read -r c m p rc < <(measure sh -c "rs274 -g '$peer_file' '$WORK/rs274_calls.txt' < /dev/null")
-      peer="$peer $c"
+      read -r c m p rc w < <(measure sh -c "rs274 -g '$peer_file' '$WORK/rs274_calls.txt' < /dev/null")
+      peer="$peer $c"; peer_wall="$peer_wall $w"
     fi
   done
   local mn mb mp
   mn=$(echo "$now" | median)
   mb=$([ -n "$before" ] && echo "$before" | median || echo -)
   mp=$([ -n "$peer" ] && echo "$peer" | median || echo -)
+  local wn wb wp
+  wn=$(echo "$now_wall" | median)
+  wb=$([ -n "$before_wall" ] && echo "$before_wall" | median || echo -)
+  wp=$([ -n "$peer_wall" ] && echo "$peer_wall" | median || echo -)
   awk -v l="$label" -v n="$BLOCKS" -v a="$mn" -v b="$mb" -v p="$mp" -v rss="$rss" -v pn="$planned_now" \
-      -v pb="$planned_before" -v fails="$fails" 'BEGIN {
+      -v pb="$planned_before" -v fails="$fails" -v wn="$wn" -v wb="$wb" -v wp="$wp" 'BEGIN {
     rate = n / a / 1e6
     eb = (b == "-") ? "-" : sprintf("%.2f", n / b / 1e6)
     up = (b == "-") ? "-" : sprintf("%.2fx", b / a)
     pr = (p == "-") ? "-" : sprintf("%.2f", n / p / 1e6)
     ratio = (p == "-") ? "-" : sprintf("%.2fx", p / a)
     change = (pb == "-" || pn == "-") ? "-" : sprintf("%+.4f%%", (pn - pb) / pb * 100)
-    printf "| %s | %s | %.2f | %s | %s | %.1f | %s | %s | %s | %s |%s\n", l, eb, rate, up, (b == "-") ? "-" : b " / " a,
-           rss, change, pr, ratio, pn, fails ? " FAILED RUNS: " fails : ""
+    wrate = sprintf("%.2f", n / wn / 1e6)
+    wearl = (wb == "-") ? "-" : sprintf("%.2f", n / wb / 1e6)
+    wratio = (wp == "-") ? "-" : sprintf("%.2fx", wp / wn)
+    printf "| %s | %s | %.2f | %s | %s | %.1f | %s | %s | %s | %s | %s | %s | %s |%s\n", l, eb, rate, up,
+           (b == "-") ? "-" : b " / " a, rss, change, pr, ratio, pn, wearl, wrate, wratio, fails ? " FAILED RUNS: " fails : ""
   }' | tee -a "$OUT"
 }
 
 echo "drycut run, $BLOCKS blocks, median CPU s of $REPS alternating runs (M blocks/s = blocks / CPU s)" | tee -a "$OUT"
-echo "| program | earlier M/s | now M/s | speed-up | CPU s earlier / now | peak RSS MB | planned time change | rs274 M/s | now / rs274 | planned s |" | tee -a "$OUT"
-echo "|---|---|---|---|---|---|---|---|---|---|" | tee -a "$OUT"
+echo "| program | earlier M/s | now M/s | speed-up | CPU s earlier / now | peak RSS MB | planned time change | rs274 M/s | now / rs274 | planned s | earlier M/s wall | now M/s wall | now / rs274 wall |" | tee -a "$OUT"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|" | tee -a "$OUT"
 for kind in $KINDS; do
   case $kind in
     g1) label="G1 G64 SOFT" ;;
@@ -114,8 +125,9 @@ done
 
 if [ "$BIG" -gt 0 ]; then
   f=$(program g1 "$BIG")
-  read -r c m p rc < <(measure "$DRYCUT" run -q "$f")
-  awk -v n="$BIG" -v c="$c" -v m="$m" -v rc="$rc" 'BEGIN {
-    printf "G1 G64 SOFT %d blocks: CPU %.2f s (%.2f M blocks/s), peak RSS %.1f MB, exit %d\n", n, c, n / c / 1e6, m, rc }' | tee -a "$OUT"
+  read -r c m p rc w < <(measure "$DRYCUT" run -q "$f")
+  awk -v n="$BIG" -v c="$c" -v m="$m" -v rc="$rc" -v w="$w" 'BEGIN {
+    printf "G1 G64 SOFT %d blocks: CPU %.2f s (%.2f M blocks/s), wall %.2f s (%.2f M blocks/s), peak RSS %.1f MB, exit %d\n",
+           n, c, n / c / 1e6, w, n / w / 1e6, m, rc }' | tee -a "$OUT"
 fi
 echo "figures written to $OUT"
