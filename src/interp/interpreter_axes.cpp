@@ -415,6 +415,13 @@ std::vector<ExtraAxisMove> Interpreter::take_extra_axis_moves(BlockContext& ctx)
 
 void Interpreter::attach_extra_axes(BlockContext& ctx, PathElement& e, std::vector<ExtraAxisMove> moves) {
   if (moves.empty()) return;
+  // The smoothing stage rounds corners of X/Y/Z paths only (corner_smoothing.hpp): a corner of a
+  // block that moves a further axis passes as under G64, which is said rather than silent.
+  const int code = e.smoothing.code;
+  if (!e.rapid && (code == 641 || code == 642 || code == 643 || code == 645) &&
+      (e.dynamics.transition == TransitionMode::SmoothDistance || e.dynamics.transition == TransitionMode::SmoothTolerance))
+    warn_once(ctx, "G" + std::to_string(code) + " corner rounding of blocks that move further axes (" + moves.front().name +
+                       " ...): their corners are planned as under G64", 0);
   e.extra_axes = std::move(moves);
   // F refers to the feed group's length (G93: the block time fills the whole length).
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), e.curve->end() - e.curve->start());
