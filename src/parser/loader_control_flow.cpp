@@ -100,11 +100,15 @@ void ProgramLoader::execute_control() {
         push_control(c);
       } else if (skip_forward(true) == Statement::Else) {
         c.kind = Statement::If;
+        c.in_else = true;
         push_control(c);
       }
       return;
     case Statement::Else:
       expect_top(Statement::If);
+      // One ELSE per IF (Job Planning, "Program branches IF-ELSE-ENDIF"): a second one is the
+      // control's nesting alarm, not a second alternative (before 2026-11-28 it ran silently).
+      if (stack.back().in_else) throw LineError(12640, column, "second ELSE in one IF");
       stack.pop_back();
       skip_forward(false);
       return;
@@ -219,8 +223,10 @@ Statement ProgramLoader::skip_forward(bool stop_at_else) {
     const Statement s = parsed_.statement;
     if (is_opener(s)) {
       ++depth;
-    } else if (depth == 0 && stop_at_else && s == Statement::Else) {
-      return s;
+    } else if (depth == 0 && s == Statement::Else && opener == Statement::If) {
+      if (stop_at_else) return s;
+      // Skipping the ELSE part to its ENDIF: a second ELSE of the same IF.
+      raise(12640, "second ELSE in one IF", parsed_.statement_column);
     } else if (is_closer(s)) {
       if (depth > 0) {
         --depth;

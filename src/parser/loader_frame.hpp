@@ -18,6 +18,7 @@ struct ProgramLoader::ControlFrame {
   double end = 0.0;   // FOR: last value
   std::string variable;  // FOR: loop variable
   std::string awaited_input;  // IF/WHILE: the input or PLC datum its condition read last (empty: none)
+  bool in_else = false;       // IF: its ELSE part runs (a second ELSE is a nesting error)
 };
 
 // REPEAT start [end] P=n / REPEATB: lines from `start` up to (not including) `stop` are run
