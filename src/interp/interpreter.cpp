@@ -137,6 +137,8 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
   restored.tooth_feed = state_.tooth_feed;  // like F
   restored.tooth_feed_unit_mm = state_.tooth_feed_unit_mm;
   restored.spindle_rpm = state_.spindle_rpm;
+  restored.cutting_speed = state_.cutting_speed;
+  restored.spindle_speed_limit = state_.spindle_speed_limit;  // LIMS writes a setting datum, no G code
   restored.spindle = state_.spindle;
   restored.thread_lead_mm = state_.thread_lead_mm;
   restored.thread_lead_axis = state_.thread_lead_axis;
@@ -144,10 +146,11 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
 }
 
 void Interpreter::apply_g_words(BlockContext& ctx) {
-  // G97 (G971, G972, G973) after G96 freezes the speed the spindle has at the block start (an S
-  // in the block replaces it later).
-  const bool freezes = ctx.block.has_g(97) || ctx.block.has_g(971) || ctx.block.has_g(972) || ctx.block.has_g(973);
-  const double frozen_speed = state_.constant_cutting_speed && freezes ? spindle_speed(ctx) : -1.0;
+  // G97 (G971, G972, G973) or a feed type G93/G94/G95 after G96 freezes the speed the spindle has
+  // at the block start (an S in the block replaces it later).
+  const bool was_g96 = state_.constant_cutting_speed;
+  const bool ends_g96 = ends_constant_cutting_speed(ctx.block);
+  const double frozen_speed = was_g96 && ends_g96 ? spindle_speed(ctx) : -1.0;
   int group1 = -1;
   for (const auto& g : ctx.block.g) {
     const int code = g.code;
@@ -220,7 +223,10 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
     if (state_.apply_code("G" + std::to_string(code))) continue;
     warn_once(ctx, "G" + std::to_string(code), g.column);
   }
-  if (frozen_speed >= 0 && state_.spindle != SpindleState::Stopped) state_.spindle_rpm = frozen_speed;
+  if (ends_g96) keep_g96_beside_feed_type(ctx);
+  if (frozen_speed >= 0 && !state_.constant_cutting_speed && state_.spindle != SpindleState::Stopped)
+    state_.spindle_rpm = frozen_speed;
+  if (!was_g96 && state_.constant_cutting_speed) select_constant_cutting_speed(ctx);
 }
 
 void Interpreter::apply_commands(BlockContext& ctx) {
@@ -296,7 +302,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     } else if (n == "S" || numbered_spindle(n) > 0) {
       apply_spindle_speed(ctx, a);
     } else if (n == "LIMS") {
-      if (a.value < 0) raise(ctx, 12160, "LIMS must not be negative", a.column);
+      if (a.value < 0) raise(ctx, 14820, "LIMS must not be negative", a.column);
       state_.spindle_speed_limit = a.value;
     } else if (n == "SF") {
       // Thread start angle: shifts where the thread starts on the circumference, not its time.
@@ -343,7 +349,10 @@ void Interpreter::apply_spindle_speed(BlockContext& ctx, const AddressWord& a) {
     set_speed_limit(ctx, a);
     return;
   }
-  state_.spindle_rpm = a.value;
+  // Under G96 S is the cutting speed, kept apart from the speed in rev/min: G97 freezes the speed
+  // without losing it, and a later G96 without S takes it up again (Fundamentals, "Constant
+  // cutting rate": "if G96 is selected again, the entry is optional").
+  (state_.constant_cutting_speed ? state_.cutting_speed : state_.spindle_rpm) = a.value;
   state_.cutting_speed_svc = 0.0;  // S and SVC replace each other
 }
 
@@ -416,8 +425,7 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       case 5:
         // M5 does not wait for the spindle: it brakes (MD35200) while the program goes on; an
         // SPOS/M19 before it stands finds it still turning (add_spindle_positioning).
-        if (state_.spindle != SpindleState::Stopped && state_.spindle_rpm > 0)
-          master_braking_ = {nominal_time_s_, state_.spindle_rpm};
+        if (const double rpm = std::abs(actual_spindle_speed(0)); rpm > 0) master_braking_ = {nominal_time_s_, rpm};
         state_.spindle = SpindleState::Stopped;
         break;
       case 19: {
@@ -463,8 +471,9 @@ void Interpreter::change_tool(BlockContext& ctx) {
   const std::string label =
       tools_.change_on_m_code() ? "M" + std::to_string(tools_.change_m_code()) + " " + tool : "T " + tool;
   // The tool in the spindle (turret) already: nothing is changed, no change time (CAM posts
-  // repeat T1 M6 for the next operation with the same tool); the motion stops as at a change.
-  if (before && before == tools_.active_tool()) {
+  // repeat T1 M6 for the next operation with the same tool, or name it T="..." once and T1 once);
+  // the motion stops as at a change.
+  if (before && tools_.active_tool() && tools_.same_tool(*before, *tools_.active_tool())) {
     emit_control(ctx, ElementKind::Dwell, label + " (in the spindle already)");
     return;
   }
@@ -494,7 +503,7 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   if (!state_.constant_cutting_speed || tapping) {
     // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point);
     // the warning only where the speed times the path (G95, threads, tapping).
-    const double rpm = limit_to_g25_g26(ctx, state_.spindle_rpm, false);
+    const double rpm = limit_to_g25_g26(ctx, within_lims(ctx, state_.spindle_rpm), false);
     if (rpm > profile_.max_spindle_speed_rpm) {
       if (state_.feed_mode != FeedMode::PerRevolution && !state_.thread_mode()) return profile_.max_spindle_speed_rpm;
       const std::string what = "S" + std::to_string(static_cast<long>(rpm)) +
@@ -508,7 +517,7 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   // G96: S is the cutting speed at the tool; the speed follows the diameter 2|x| (work
   // coordinates; x the SCC axis, default the transverse axis of MD20100) over the block, limited
   // by LIMS, G26 and MD35100 above and G25 below (constant_cutting_speed.hpp).
-  const double speed_mm_min = cutting_speed_mm_min(state_.spindle_rpm);
+  const double speed_mm_min = cutting_speed_mm_min(state_.cutting_speed);
   // Without a chord (G4 S, G97's frozen speed, a corner's feed) the speed the spindle has: the one
   // set for the last cut's end, which a G0 since has not changed (Fundamentals, "Constant cutting
   // rate": "G0 does not change the speed").

@@ -274,6 +274,11 @@ class Interpreter {
   double limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed);  // warns
   double within_g25_g26(double rpm) const;  // the same limits, silently
   double g96_speed_ceiling() const;         // MD35100, LIMS, G26: the highest G96 speed
+  double lims_ceiling() const;              // LIMS where it acts (G96, G961, G962, G97), else 0
+  double within_lims(const BlockContext& ctx, double rpm);  // warns
+  static bool ends_constant_cutting_speed(const parser::Block& block);  // G97.., G93/G94/G95
+  void select_constant_cutting_speed(BlockContext& ctx);  // 10900 without any cutting speed
+  void keep_g96_beside_feed_type(BlockContext& ctx);       // `G96 G95` in one block
   PathElement dwell_element(BlockContext& ctx);             // G4 F / S / S<n>=
   void warn_working_area(const BlockContext& ctx);          // G25/G26 with axis words
   // G4 S<rev> / G4 S<n>=<rev>: the dwell in seconds.

@@ -38,10 +38,52 @@ double Interpreter::within_g25_g26(double rpm) const {
   return rpm;
 }
 
+bool Interpreter::ends_constant_cutting_speed(const parser::Block& block) {
+  for (const int code : {97, 971, 972, 973, 93, 94, 95})
+    if (block.has_g(code)) return true;
+  return false;
+}
+
+void Interpreter::select_constant_cutting_speed(BlockContext& ctx) {
+  // Fundamentals, "Constant cutting rate": the first G96/G961/G962 needs S (Function Manual V1:
+  // alarm 10900); a later one may leave it out and takes up the cutting speed programmed before.
+  if (state_.cutting_speed > 0 || ctx.dwell || ctx.speed_limit) return;
+  for (const AddressWord& a : ctx.block.addresses)
+    if (a.name == "S" || (numbered_spindle(a.name) > 0 && numbered_spindle(a.name) == master_spindle_)) return;
+  raise(ctx, 10900, "G96/G961/G962 without S, and no cutting speed programmed before");
+}
+
+void Interpreter::keep_g96_beside_feed_type(BlockContext& ctx) {
+  // G96 and G94/G95 are both G group 15: in one block (`G96 G95 S200`) the programmer means the
+  // constant cutting speed with that feed type; drycut keeps G96 and says so (the manuals found do
+  // not say which of the two the control takes).
+  if (state_.constant_cutting_speed || !(ctx.block.has_g(93) || ctx.block.has_g(94) || ctx.block.has_g(95))) return;
+  for (const int code : {96, 961, 962})
+    if (ctx.block.has_g(code)) {
+      state_.constant_cutting_speed = true;
+      state_.lims_acts = true;
+      warn_once(ctx, "G" + std::to_string(code) + " with G93/G94/G95 in one block (both G group 15): drycut keeps the "
+                     "constant cutting speed with the feed type programmed last", 0);
+      return;
+    }
+}
+
+double Interpreter::lims_ceiling() const {
+  return state_.lims_acts && state_.spindle_speed_limit > 0 ? state_.spindle_speed_limit : 0.0;
+}
+
+double Interpreter::within_lims(const BlockContext& ctx, double rpm) {
+  // LIMS limits G97's speed too (Fundamentals, LIMS: "active if G96, G961 and G97 are active").
+  const double ceiling = lims_ceiling();
+  if (ceiling <= 0 || rpm <= ceiling) return rpm;
+  warn_once(ctx, kValueLimited, "S" + rpm_text(rpm) + " above LIMS: limited to " + rpm_text(ceiling) + " rpm", 0);
+  return ceiling;
+}
+
 double Interpreter::g96_speed_ceiling() const {
   // Under G96 the speed may rise up to MD35100, LIMS and the G26 limit, whichever is lowest.
   double max_rpm = profile_.max_spindle_speed_rpm;
-  if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
+  if (lims_ceiling() > 0) max_rpm = std::min(max_rpm, lims_ceiling());
   if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
   return max_rpm;
 }
@@ -153,14 +195,15 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
     next = it->second;
     other_spindles_.erase(it);
   }
-  if (!g96) state_.spindle_rpm = next.rpm;
+  state_.spindle_rpm = next.rpm;  // under G96 unused until a G97 freezes the new master's speed
   state_.spindle = next.state;
   master_spindle_ = n;
   become_master_run_up(next.command, next.run_up);
 }
 
 double Interpreter::programmed_spindle_speed(int spindle) const {
-  if (spindle == 0 || spindle == master_spindle_) return state_.spindle_rpm;
+  if (spindle == 0 || spindle == master_spindle_)
+    return state_.constant_cutting_speed ? state_.cutting_speed : state_.spindle_rpm;
   const auto it = other_spindles_.find(spindle);
   return it == other_spindles_.end() ? 0.0 : it->second.rpm;
 }
@@ -178,12 +221,13 @@ double Interpreter::actual_spindle_speed(int spindle) const {
   if (state == SpindleState::Stopped) return 0.0;
   double rpm = programmed_spindle_speed(spindle);
   if (master && !state_.constant_cutting_speed) {
-    // The set speed within G26/G25 and MD35100, as spindle_speed() limits it.
+    // The set speed within LIMS, G26/G25 and MD35100, as spindle_speed() limits it.
+    if (lims_ceiling() > 0) rpm = std::min(rpm, lims_ceiling());
     rpm = std::min(within_g25_g26(rpm), profile_.max_spindle_speed_rpm);
   } else if (master) {
     // G96: S is the cutting speed; the spindle turns at what it gives at the diameter it was
     // last set for (the last cut's end: G0 does not change it), as spindle_speed() plans it.
-    rpm = g96_set_speed(g96_speed_position_, cutting_speed_mm_min(rpm));
+    rpm = g96_set_speed(g96_speed_position_, cutting_speed_mm_min(state_.cutting_speed));
   }
   return state == SpindleState::CounterClockwise ? -rpm : rpm;
 }

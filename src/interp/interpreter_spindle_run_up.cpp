@@ -63,7 +63,9 @@ Interpreter::SpindleRunUp Interpreter::standing_run_up() const {
 
 void Interpreter::note_spindle_change() {
   // A G96 speed that follows the diameter is no programmed change (the command is unchanged).
-  const double value = state_.constant_cutting_speed ? cutting_speed_mm_min(state_.spindle_rpm) : state_.spindle_rpm;
+  // Outside G96 the set speed (a new LIMS or G26 below S changes it too).
+  const double value = state_.constant_cutting_speed ? cutting_speed_mm_min(state_.cutting_speed)
+                                                     : std::abs(actual_spindle_speed(0));
   const SpindleCommand now{state_.spindle, value, state_.constant_cutting_speed, master_spindle_};
   if (now != spindle_command_) {
     run_up_ = next_run_up(spindle_command_, run_up_, 0.0);  // from the speed it has
@@ -106,7 +108,7 @@ void Interpreter::wait_for_spindle_speed(const PathElement& next) {
     // G96: the set speed where the cut starts, not where G96 was programmed (a tool-change point
     // far out gives a low speed, the centre the LIMS speed).
     run_up_.to_rpm = with_direction(state_.spindle, g96_set_speed(next.curve->at(0.0).position,
-                                                                  cutting_speed_mm_min(state_.spindle_rpm)));
+                                                                  cutting_speed_mm_min(state_.cutting_speed)));
     run_up_.follows_set_speed = true;
   }
   if (run_up_.to_rpm == 0.0) return;

@@ -16,6 +16,11 @@ void set_feed_mode(ModalState& s, FeedMode mode) {
   s.feed_mode = mode;
 }
 
+void set_cutting_speed_mode(ModalState& s, bool constant_cutting_speed, bool lims_acts) {
+  s.constant_cutting_speed = constant_cutting_speed;
+  s.lims_acts = lims_acts;
+}
+
 // Modal codes given by name (reset list and program words alike). G words arrive here as "G64".
 using Setter = void (*)(ModalState&);
 constexpr std::array<std::pair<std::string_view, Setter>, 76> kCodes{{
@@ -38,19 +43,21 @@ constexpr std::array<std::pair<std::string_view, Setter>, 76> kCodes{{
     {"G71", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = false; }},
     {"G700", [](ModalState& s) { s.inch = true; s.feed_in_geometry_unit = true; }},
     {"G710", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = true; }},
-    {"G93", [](ModalState& s) { set_feed_mode(s, FeedMode::InverseTime); }},
-    {"G94", [](ModalState& s) { set_feed_mode(s, FeedMode::PerMinute); }},
-    {"G95", [](ModalState& s) { set_feed_mode(s, FeedMode::PerRevolution); }},
-    // G96 switches feed per revolution on with constant cutting speed; G97 keeps G95.
-    {"G96", [](ModalState& s) { s.constant_cutting_speed = true; set_feed_mode(s, FeedMode::PerRevolution); }},
-    {"G97", [](ModalState& s) { s.constant_cutting_speed = false; }},
-    // Fundamentals, "Constant cutting rate": G961/G971 the same with linear feed (as G94),
-    // G962/G972 keeping the feed type, G973 as G97 without the spindle speed limitation LIMS.
-    {"G961", [](ModalState& s) { s.constant_cutting_speed = true; set_feed_mode(s, FeedMode::PerMinute); }},
-    {"G962", [](ModalState& s) { s.constant_cutting_speed = true; }},
-    {"G971", [](ModalState& s) { s.constant_cutting_speed = false; set_feed_mode(s, FeedMode::PerMinute); }},
-    {"G972", [](ModalState& s) { s.constant_cutting_speed = false; }},
-    {"G973", [](ModalState& s) { s.constant_cutting_speed = false; }},
+    // G group 15: a feed type ends G96 (Fundamentals 10.2004, "Constant cutting rate": G96/G961
+    // "can also be deactivated with G94 or G95"), and LIMS acts only under G96, G961 and G97
+    // (ibid., LIMS). G96 switches feed per revolution on; G97 keeps the feed type.
+    {"G93", [](ModalState& s) { set_feed_mode(s, FeedMode::InverseTime); set_cutting_speed_mode(s, false, false); }},
+    {"G94", [](ModalState& s) { set_feed_mode(s, FeedMode::PerMinute); set_cutting_speed_mode(s, false, false); }},
+    {"G95", [](ModalState& s) { set_feed_mode(s, FeedMode::PerRevolution); set_cutting_speed_mode(s, false, false); }},
+    {"G96", [](ModalState& s) { set_cutting_speed_mode(s, true, true); set_feed_mode(s, FeedMode::PerRevolution); }},
+    {"G97", [](ModalState& s) { set_cutting_speed_mode(s, false, true); }},
+    // G961/G971 the same with linear feed (as G94), G962/G972 keeping the feed type, G973 as G97
+    // without the spindle speed limitation LIMS.
+    {"G961", [](ModalState& s) { set_cutting_speed_mode(s, true, true); set_feed_mode(s, FeedMode::PerMinute); }},
+    {"G962", [](ModalState& s) { set_cutting_speed_mode(s, true, true); }},
+    {"G971", [](ModalState& s) { set_cutting_speed_mode(s, false, false); set_feed_mode(s, FeedMode::PerMinute); }},
+    {"G972", [](ModalState& s) { set_cutting_speed_mode(s, false, false); }},
+    {"G973", [](ModalState& s) { set_cutting_speed_mode(s, false, false); }},
     {"G33", [](ModalState& s) { s.motion = MotionMode::Thread; }},
     {"G34", [](ModalState& s) { s.motion = MotionMode::ThreadIncreasing; }},
     {"G35", [](ModalState& s) { s.motion = MotionMode::ThreadDecreasing; }},

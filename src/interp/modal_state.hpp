@@ -39,7 +39,10 @@ struct ModalState {
   bool inch = false;                // G70/G700: geometry in inch
   bool feed_in_geometry_unit = false;  // G700/G710: F in the unit of the geometry, else in the base unit (MD10240)
   FeedMode feed_mode = FeedMode::PerMinute;
-  bool constant_cutting_speed = false;  // G96 (S is m/min at the tool) / G97
+  // G group 15 as it concerns the spindle: G96/G961/G962 (S is m/min at the tool) or not, and
+  // whether LIMS acts (under G96, G961, G962 and G97; not under G93-G95, G971-G973).
+  bool constant_cutting_speed = false;
+  bool lims_acts = false;
   double spindle_speed_limit = 0.0;     // LIMS= rev/min (0 = none)
   double thread_lead_mm = 0.0;          // last thread lead I/J/K of G33..G35/G331/G332 (mm/rev)
   int thread_lead_axis = 2;             // the axis of that lead (I: X, J: Y, K: Z)
@@ -55,7 +58,8 @@ struct ModalState {
   // FZ times the active edge's number of teeth. Deleted by a change of G93/G94/G95.
   double tooth_feed = 0.0;
   double tooth_feed_unit_mm = 1.0;  // as feed_unit_mm, for FZ
-  double spindle_rpm = 0.0;
+  double spindle_rpm = 0.0;         // S outside G96 (rev/min); G97 freezes the G96 speed into it
+  double cutting_speed = 0.0;       // S under G96/G961/G962 (m/min, ft/min); 0: none programmed yet
   double cutting_speed_svc = 0.0;  // SVC= in m/min (ft/min), 0: the speed is the S programmed
   SpindleState spindle = SpindleState::Stopped;
   TransitionMode transition = TransitionMode::ExactStop;  // G60/G64/G641/G642...

@@ -20,6 +20,8 @@ constexpr std::array kCatalog{
     AlarmInfo{10762, S::Alarm, "Too many empty blocks between two traversing blocks with tool radius compensation", A::Siemens},
     AlarmInfo{10763, S::Warning, "Path component of the block in the compensation plane becomes zero (block skipped by bottleneck detection)", A::Siemens},
     AlarmInfo{10860, S::Alarm, "Feedrate not programmed", A::ThirdParty},
+    // Constant cutting rate (Function Manual V1 Feeds, "Constant cutting rate G96, G961": alarms).
+    AlarmInfo{10900, S::Alarm, "No S value programmed for constant cutting rate", A::Siemens},
     AlarmInfo{10950, S::Alarm, "Arc-length function too inaccurate", A::Siemens},
     AlarmInfo{12000, S::Alarm, "Address programmed repeatedly", A::ThirdParty},
     AlarmInfo{12010, S::Alarm, "Address programmed too often in block", A::ThirdParty},
@@ -45,6 +47,7 @@ constexpr std::array kCatalog{
     AlarmInfo{14130, S::Alarm, "Too many initialization values", A::ThirdParty},
     AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
     AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
+    AlarmInfo{14820, S::Alarm, "Negative maximum spindle speed programmed for constant cutting rate", A::Siemens},
     // Contour preparation started wrongly (CONTPRON; drycut: DRYCUT_CONTOUR_BEGIN/END).
     AlarmInfo{15800, S::Alarm, "Wrong initial conditions for contour preparation (CONTPRON)", A::Memory},
     AlarmInfo{16420, S::Alarm, "Axis programmed repeatedly in block", A::ThirdParty},
