@@ -37,6 +37,12 @@ const machine::Tool* ToolState::find(const std::string& id) const {
   return nullptr;
 }
 
+bool ToolState::same_tool(const std::string& a, const std::string& b) const {
+  if (a == b) return true;
+  const machine::Tool* tool = find(a);
+  return tool && tool == find(b);
+}
+
 machine::Tool* ToolState::find_by_number(int number) {
   for (auto& t : table_)
     if (t.number == number) return &t;
