@@ -309,7 +309,14 @@ class ProgramLoader::BlockBuilder {
 
   // A valid command drycut does not model (warned by name) or that changes nothing it plans:
   // not handed on, except a transformation (the interpreter suspends the software limits).
-  bool skipped_command(const Item& item, Support s) {
+  bool skipped_command(const Item& item, Support s, bool call_form = false) {
+    if (s == Support::NotModelled && call_form && l_.has_program(item.name)) {
+      // A keyword that only takes a value (NUT=, XH=, THETA=) written as a call, with the
+      // user's program of that name at hand (German shops name a slot program NUT): the call.
+      l_.warn(990018, std::string(item.name) + " (the keyword " + std::string(item.name) + "=... of the control)",
+              item.column);
+      return false;
+    }
     if (s == Support::NotModelled) {
       l_.warn_not_modelled(item.name, item.column);
       if (is_transformation_command(item.name)) add_command(item);
@@ -340,7 +347,7 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     const Support s = command_support(item.name);
-    if (skipped_command(item, s)) return;
+    if (skipped_command(item, s, true)) return;
     if (s == Support::Modelled) {
       CommandWord& c = add_command(item);
       c.has_parentheses = true;
@@ -442,7 +449,7 @@ class ProgramLoader::BlockBuilder {
       return;
     }
     const Support s = command_support(item.name);
-    if (skipped_command(item, s)) return;
+    if (skipped_command(item, s, true)) return;
     if (s == Support::Modelled) {
       CommandWord& c = add_command(item);
       if (item.name == "RET") action_ = PendingAction::Return;

@@ -314,6 +314,10 @@ void ProgramLoader::warn_not_modelled(std::string_view name, uint32_t column) {
   warn(990002, std::string(name), column);
 }
 
+bool ProgramLoader::has_program(std::string_view name) const {
+  return files_->find(normalize_program_name(name)).has_value();
+}
+
 void ProgramLoader::warn(int number, const std::string& text, uint32_t column) {
   if (warned_.size() >= kMaxWarnings || frames_.empty()) return;
   // One warning per text and line: a loop must not print it a million times.

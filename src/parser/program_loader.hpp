@@ -131,6 +131,8 @@ class ProgramLoader {
   double eval(ExprIndex e) const;
   Value eval_value(ExprIndex e) const;
   void warn_not_modelled(std::string_view name, uint32_t column);
+  // A program of this name is in the search path (a user's NUT.SPF beside the keyword NUT=).
+  bool has_program(std::string_view name) const;
   void warn(int number, const std::string& text, uint32_t column);
   [[noreturn]] void raise(int number, const std::string& detail, uint32_t column) const;
   // block_builder.cpp
