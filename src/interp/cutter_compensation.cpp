@@ -373,8 +373,10 @@ void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earl
     Item& item = window_[i];
     const bool between = i > earlier && i < later;
     if (between && item.piece) {
-      // Passengers stay (they run at the crossing point); motion pieces are cut out.
-      if (item.block != keep_a && item.block != keep_b &&
+      // Passengers stay (they run at the crossing point); motion pieces are cut out. A piece
+      // whose offset is a point (an inside rounding or arc of the tool's radius: RND=5 with a
+      // 5 mm cutter) loses no path, so no block is skipped and nothing is warned.
+      if (item.block != keep_a && item.block != keep_b && item.piece->in_plane_length() >= kZeroInPlaneLength &&
           std::find(warned.begin(), warned.end(), item.block) == warned.end()) {
         warned.push_back(item.block);
         // The catalogue text already says "skipped"; the detail says where the path was cut.

@@ -253,6 +253,25 @@ TEST(CutterCompensation, BottleneckSkipsTheShortStepWithWarning10763) {
       << run.diagnostics.items()[0].text;
 }
 
+TEST(CutterCompensation, InsideRoundingOfTheToolRadiusIsNoSkippedBlock) {
+  // RND=2 with a 2 mm tool on the inside (a pocket's corner rounded to the cutter): the rounding's
+  // offset is the point (8, 2); nothing of the path is lost, so no 10763 (a probe's shop program
+  // listed every corner of a pocket as a skipped block).
+  StageRun run;
+  Comp comp{.side = CompensationSide::Left};
+  auto rounding = std::make_shared<geometry::ArcCurve>(Vec3(8, 2, 0), 2.0, geometry::Plane::G17, -kPi / 2, kPi / 2, 0.0);
+  run.feed({line({0, -5, 0}, {0, 0, 0}, comp, 1), line({0, 0, 0}, {8, 0, 0}, comp, 2),
+            test::motion(rounding, ElementKind::Arc, comp, 3), line({10, 2, 0}, {10, 10, 0}, comp, 4),
+            line({10, 10, 0}, {20, 10, 0}, comp.off(), 5)});
+  const auto& out = run.sink.elements;
+  test::expect_continuous(out);
+  // The tool centre runs along y = 2 to the corner point (8, 2) and on along x = 8.
+  ASSERT_EQ(out.size(), 4u);  // approach, two offsets, retract: the rounding's point is no element
+  expect_line(out[1], {0, 2, 0}, {8, 2, 0}, 2);
+  expect_line(out[2], {8, 2, 0}, {8, 10, 0}, 4);
+  EXPECT_EQ(run.diagnostics.warning_count(), 0u) << (run.diagnostics.items().empty() ? "" : run.diagnostics.items()[0].text);
+}
+
 TEST(CutterCompensation, BottleneckWithG451CutsAtTheIntersectionLine) {
   StageRun run;
   Comp comp{.side = CompensationSide::Left, .g451 = true};
