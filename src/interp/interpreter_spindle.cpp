@@ -39,8 +39,12 @@ double Interpreter::within_g25_g26(double rpm) const {
 }
 
 bool Interpreter::ends_constant_cutting_speed(const parser::Block& block) {
-  for (const int code : {97, 971, 972, 973, 93, 94, 95})
-    if (block.has_g(code)) return true;
+  // One pass over the block's G words (most blocks of a CAM program have none): runs per block.
+  for (const auto& g : block.g)
+    switch (g.code) {
+      case 93: case 94: case 95: case 97: case 971: case 972: case 973: return true;
+      default: break;
+    }
   return false;
 }
 
