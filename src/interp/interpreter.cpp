@@ -278,7 +278,13 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   if (!ctx.block.m.empty()) note_tool_change_m_words(ctx);  // (a pass over the M words)
   // T="name" is not an address word: program it before the words so that a D in the same block
   // (`T="BALL_R3" D1`, as posts write it) belongs to the prepared tool, as with `T1 D1`.
-  if (ctx.block.tool_name) program_tool(ctx, *ctx.block.tool_name, 0);
+  if (ctx.block.tool_name) {
+    if (const int n = ctx.block.tool_name_spindle; n > 0 && n != master_spindle())
+      warn_once(ctx, "T" + std::to_string(n) + "= (a tool for spindle " + std::to_string(n) +
+                         ", not the master spindle: not simulated)", 0);
+    else
+      program_tool(ctx, *ctx.block.tool_name, 0);
+  }
   for (const AddressWord& a : ctx.block.addresses) {
     const std::string_view n = a.name;  // compared with literals inline, without strlen
     // X, Y, Z in a linear value mode (most words of a CAM program) are target_position's alone:

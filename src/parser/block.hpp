@@ -117,6 +117,7 @@ struct Block {
   std::vector<AddressWord> addresses;
   std::vector<CommandWord> commands;
   std::optional<std::string> tool_name;  // T="name" (case preserved)
+  int tool_name_spindle = 0;             // T<n>="name": spindle n (0: T= without extension)
   std::vector<SystemWrite> system_writes;
   std::vector<AxisWord> axis_words;
   std::vector<PolyWord> poly;
@@ -135,6 +136,7 @@ struct Block {
     addresses.clear();
     commands.clear();
     tool_name.reset();
+    tool_name_spindle = 0;
     system_writes.clear();
     axis_words.clear();
     poly.clear();

@@ -200,10 +200,14 @@ class ProgramLoader::BlockBuilder {
       l_.assign_r_parameter(std::stod(std::string(item.name.substr(1))), l_.eval(item.expr), item.column);
       return;
     }
-    if (item.name == "T" && item.index_count == 0) {
-      // T=<STRING expression> under tool management (T=_NAME in a tool-change macro): a tool name.
+    if (item.name[0] == 'T' && item.index_count == 0 &&
+        item.name.find_first_not_of("0123456789", 1) == std::string_view::npos) {
+      // T=<STRING expression> under tool management (T=_NAME in a tool-change macro): a tool
+      // name; T<n>="name" the same for spindle n (Fundamentals, "Tool change with T command":
+      // the address extension is the spindle number, as in T1=5).
       const Value v = l_.eval_value(item.expr);
       if (v.is_text()) {
+        if (item.name.size() > 1 && item.name.size() <= 3) out_.tool_name_spindle = std::stoi(std::string(item.name.substr(1)));
         tool_by_name(v.text, item.column);
         return;
       }
