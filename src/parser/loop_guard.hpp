@@ -23,8 +23,9 @@
 // SETAL(65020) / IF $A_IN[7]==0 GOTOB W1), so it never repeats: it ran into its own timeout
 // alarm (before 2026-11-28). So a jump back whose condition read an input (Visit::
 // decided_by_input: IF ... GOTOB, WHILE, UNTIL, or the IF block around a GOTOB) is a wait too
-// when the pass since the last visit dwelled (G4) and did nothing else a block carries (no axis,
-// no M function, no S): on the machine the signal ends it. A loop that computes without
+// when the pass since the last visit dwelled (G4, or a stop M0/M1 for the operator) and did
+// nothing else a block carries (no axis, no other M function, no S): on the machine the signal
+// ends it. A loop that computes without
 // dwelling (counting set inputs, testing bits of $A_DBB) or works (cuts, spindle steps of a
 // warm-up with an abort input) runs its passes. A pass that polled a timer and the input and
 // did nothing else (WHILE ($A_IN[9]==0) AND ($AC_TIMER[1]<10) ENDWHILE) is the same wait with its

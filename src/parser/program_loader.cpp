@@ -232,7 +232,13 @@ bool ProgramLoader::next(Block& out) {
 }
 
 void ProgramLoader::count_handed_block(const Block& out) {
-  if (out.has_g(4)) ++dwell_blocks_;
+  // A program stop (M0, M1) waits for the operator as G4 waits for the clock: a loop around it
+  // whose exit reads an input (`L: M0 / IF $A_IN[10]==0 GOTOB L`) is a wait, not work.
+  const bool only_stops = !out.m.empty() && out.axis_words.empty() && !out.find_address("S") &&
+                          std::all_of(out.m.begin(), out.m.end(), [](const auto& m) {
+                            return m.extension < 0 && (m.code == 0 || m.code == 1);
+                          });
+  if (out.has_g(4) || only_stops) ++dwell_blocks_;
   else if (!out.axis_words.empty() || !out.m.empty() || out.find_address("S")) ++work_blocks_;
 }
 
