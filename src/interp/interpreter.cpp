@@ -223,7 +223,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
     if (state_.apply_code("G" + std::to_string(code))) continue;
     warn_once(ctx, "G" + std::to_string(code), g.column);
   }
-  if (ends_g96) keep_g96_beside_feed_type(ctx);
+  if (ends_g96) combine_feed_type_and_speed_mode(ctx);
   if (frozen_speed >= 0 && !state_.constant_cutting_speed && state_.spindle != SpindleState::Stopped)
     state_.spindle_rpm = frozen_speed;
   if (!was_g96 && state_.constant_cutting_speed) select_constant_cutting_speed(ctx);

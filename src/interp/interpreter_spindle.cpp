@@ -57,19 +57,31 @@ void Interpreter::select_constant_cutting_speed(BlockContext& ctx) {
   raise(ctx, 10900, "G96/G961/G962 without S, and no cutting speed programmed before");
 }
 
-void Interpreter::keep_g96_beside_feed_type(BlockContext& ctx) {
-  // G96 and G94/G95 are both G group 15: in one block (`G96 G95 S200`) the programmer means the
-  // constant cutting speed with that feed type; drycut keeps G96 and says so (the manuals found do
-  // not say which of the two the control takes).
-  if (state_.constant_cutting_speed || !(ctx.block.has_g(93) || ctx.block.has_g(94) || ctx.block.has_g(95))) return;
-  for (const int code : {96, 961, 962})
-    if (ctx.block.has_g(code)) {
-      state_.constant_cutting_speed = true;
-      state_.lims_acts = true;
-      warn_once(ctx, "G" + std::to_string(code) + " with G93/G94/G95 in one block (both G group 15): drycut keeps the "
-                     "constant cutting speed with the feed type programmed last", 0);
-      return;
-    }
+void Interpreter::combine_feed_type_and_speed_mode(BlockContext& ctx) {
+  // G93/G94/G95 and G96/G961/G962/G97/G971/G972/G973 are all G group 15: in one block
+  // (`G96 S200 M4 G95 F0.25`, `G94 G97 S1000`) the programmer means the feed type of the one and
+  // the spindle mode of the other, and that is what drycut takes. Where the two disagree (G94
+  // beside G96 or G97, which imply feed per revolution; G95 beside G961/G971, which imply it per
+  // minute) it says so: the manuals found do not say which of two codes of one group the control
+  // takes.
+  int feed = 0, speed = 0;
+  for (const auto& g : ctx.block.g) {
+    if (g.code == 93 || g.code == 94 || g.code == 95) feed = static_cast<int>(g.code);
+    if (g.code == 96 || g.code == 961 || g.code == 962 || g.code == 97 || g.code == 971 || g.code == 972 ||
+        g.code == 973)
+      speed = static_cast<int>(g.code);
+  }
+  if (feed == 0 || speed == 0) return;
+  state_.apply_code("G" + std::to_string(speed));
+  state_.apply_code("G" + std::to_string(feed));  // the feed type; it also ends G96 ...
+  state_.constant_cutting_speed = speed == 96 || speed == 961 || speed == 962;  // ... which the other sets
+  state_.lims_acts = speed == 96 || speed == 961 || speed == 962 || speed == 97;
+  const bool per_revolution = speed == 96 || speed == 97 || speed == 973;
+  const bool per_minute = speed == 961 || speed == 971;
+  if ((per_revolution && feed != 95) || (per_minute && feed != 94))
+    warn_once(ctx, "G" + std::to_string(speed) + " with G" + std::to_string(feed) + " in one block (both G group 15): "
+                   "drycut takes the feed type of G" + std::to_string(feed) + " and the spindle speed mode of G" +
+                   std::to_string(speed), 0);
 }
 
 double Interpreter::lims_ceiling() const {

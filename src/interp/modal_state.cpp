@@ -45,19 +45,20 @@ constexpr std::array<std::pair<std::string_view, Setter>, 76> kCodes{{
     {"G710", [](ModalState& s) { s.inch = false; s.feed_in_geometry_unit = true; }},
     // G group 15: a feed type ends G96 (Fundamentals 10.2004, "Constant cutting rate": G96/G961
     // "can also be deactivated with G94 or G95"), and LIMS acts only under G96, G961 and G97
-    // (ibid., LIMS). G96 switches feed per revolution on; G97 keeps the feed type.
+    // (ibid., LIMS). G96 switches feed per revolution on.
     {"G93", [](ModalState& s) { set_feed_mode(s, FeedMode::InverseTime); set_cutting_speed_mode(s, false, false); }},
     {"G94", [](ModalState& s) { set_feed_mode(s, FeedMode::PerMinute); set_cutting_speed_mode(s, false, false); }},
     {"G95", [](ModalState& s) { set_feed_mode(s, FeedMode::PerRevolution); set_cutting_speed_mode(s, false, false); }},
     {"G96", [](ModalState& s) { set_cutting_speed_mode(s, true, true); set_feed_mode(s, FeedMode::PerRevolution); }},
-    {"G97", [](ModalState& s) { set_cutting_speed_mode(s, false, true); }},
-    // G961/G971 the same with linear feed (as G94), G962/G972 keeping the feed type, G973 as G97
-    // without the spindle speed limitation LIMS.
+    // G97 is feed per revolution with constant spindle speed ("G97 can be programmed without G96
+    // beforehand; it then has the same effect as G95"); G973 the same without LIMS; G961/G971
+    // linear feed (as G94); G962/G972 keep the feed type.
+    {"G97", [](ModalState& s) { set_cutting_speed_mode(s, false, true); set_feed_mode(s, FeedMode::PerRevolution); }},
     {"G961", [](ModalState& s) { set_cutting_speed_mode(s, true, true); set_feed_mode(s, FeedMode::PerMinute); }},
     {"G962", [](ModalState& s) { set_cutting_speed_mode(s, true, true); }},
     {"G971", [](ModalState& s) { set_cutting_speed_mode(s, false, false); set_feed_mode(s, FeedMode::PerMinute); }},
     {"G972", [](ModalState& s) { set_cutting_speed_mode(s, false, false); }},
-    {"G973", [](ModalState& s) { set_cutting_speed_mode(s, false, false); }},
+    {"G973", [](ModalState& s) { set_cutting_speed_mode(s, false, false); set_feed_mode(s, FeedMode::PerRevolution); }},
     {"G33", [](ModalState& s) { s.motion = MotionMode::Thread; }},
     {"G34", [](ModalState& s) { s.motion = MotionMode::ThreadIncreasing; }},
     {"G35", [](ModalState& s) { s.motion = MotionMode::ThreadDecreasing; }},
