@@ -307,9 +307,8 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
       ctx.nonmodal_feed = a.value;
     } else if (n == "S" || numbered_spindle(n) > 0) {
       apply_spindle_speed(ctx, a);
-    } else if (n == "LIMS") {
-      if (a.value < 0) raise(ctx, 14820, "LIMS must not be negative", a.column);
-      state_.spindle_speed_limit = a.value;
+    } else if (n.starts_with("LIMS")) {
+      apply_speed_limit_lims(ctx, a);
     } else if (n == "SF") {
       // Thread start angle: shifts where the thread starts on the circumference, not its time.
     } else if (n == "OVR") {

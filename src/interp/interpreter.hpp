@@ -274,6 +274,7 @@ class Interpreter {
   double limit_to_g25_g26(const BlockContext& ctx, double rpm, bool constant_cutting_speed);  // warns
   double within_g25_g26(double rpm) const;  // the same limits, silently
   double g96_speed_ceiling() const;         // MD35100, LIMS, G26: the highest G96 speed
+  void apply_speed_limit_lims(BlockContext& ctx, const parser::AddressWord& a);  // LIMS=, LIMS[n]=
   double lims_ceiling() const;              // LIMS where it acts (G96, G961, G962, G97), else 0
   double within_lims(const BlockContext& ctx, double rpm);  // warns
   static bool ends_constant_cutting_speed(const parser::Block& block);  // G97.., G93/G94/G95

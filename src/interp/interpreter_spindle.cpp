@@ -84,6 +84,19 @@ void Interpreter::combine_feed_type_and_speed_mode(BlockContext& ctx) {
                    std::to_string(speed), 0);
 }
 
+void Interpreter::apply_speed_limit_lims(BlockContext& ctx, const AddressWord& a) {
+  // LIMS= the master spindle's limit; LIMS[n]= (address LIMS<n>) spindle n's, which drycut keeps
+  // only for the master (the others' speeds are not simulated).
+  if (a.value < 0) raise(ctx, 14820, a.name + " must not be negative", a.column);
+  const std::string_view n = std::string_view(a.name).substr(4);
+  if (!n.empty() && std::stoi(std::string(n)) != master_spindle_) {
+    warn_once(ctx, "LIMS[" + std::string(n) + "] (the speed limit of spindle " + std::string(n) +
+                       ", not the master spindle: not simulated)", a.column);
+    return;
+  }
+  state_.spindle_speed_limit = a.value;
+}
+
 double Interpreter::lims_ceiling() const {
   return state_.lims_acts && state_.spindle_speed_limit > 0 ? state_.spindle_speed_limit : 0.0;
 }

@@ -295,7 +295,9 @@ class ProgramLoader::BlockBuilder {
       add_m(item, 0, item.expr, k);
       return;
     }
-    if (item.name == "S" || item.name == "H" || item.name == "T" || item.name == "D") {
+    // LIMS[n]= the speed limit of spindle n (Fundamentals, "Constant cutting rate": up to four
+    // spindles in one block, LIMS=300 LIMS[2]=450).
+    if (item.name == "S" || item.name == "H" || item.name == "T" || item.name == "D" || item.name == "LIMS") {
       address_value(std::string(item.name) + std::to_string(k), item);
       return;
     }

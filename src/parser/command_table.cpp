@@ -57,7 +57,7 @@ constexpr std::array kCommands{
     CommandEntry{"DISCL", N},
     CommandEntry{"EXTCALL", M}, CommandEntry{"PCALL", M},
     CommandEntry{"POS", M},     CommandEntry{"POSA", M},    CommandEntry{"SPOSA", M},
-    CommandEntry{"WAITP", M},   CommandEntry{"WAITS", M},   CommandEntry{"LIMS", N},
+    CommandEntry{"WAITP", M},   CommandEntry{"WAITS", M},
     CommandEntry{"PRESETON", N}, CommandEntry{"CPROT", N},  CommandEntry{"ORIRESET", N},
     CommandEntry{"FL", N},      CommandEntry{"ACC", M},     CommandEntry{"JERKLIM", M},
     CommandEntry{"VELOLIM", M}, CommandEntry{"FGREF", M},
