@@ -118,6 +118,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   if (ctx.tapping_chuck) state_.motion = MotionMode::Linear;
   execute_motion(ctx);
   if (ctx.tapping_chuck) state_.motion = modal_motion;
+  if (ctx.stop == StopKind::ProgramStop || ctx.stop == StopKind::OptionalStop) settle_spindles_at_stop();
   warn_unused_corner(ctx);
   if (!ctx.simple) block_between_compressible_ = true;
 }
@@ -140,6 +141,10 @@ void Interpreter::apply_modal_save(parser::ModalSave what) {
   restored.cutting_speed = state_.cutting_speed;
   restored.spindle_speed_limit = state_.spindle_speed_limit;  // LIMS writes a setting datum, no G code
   restored.spindle = state_.spindle;
+  // The caller's G97 (or G94/G95) coming back over the subprogram's G96 ends it as a G97 would:
+  // the spindle keeps the speed it has (drycut's reading [I]; docs/controller-state.md).
+  if (state_.constant_cutting_speed && !restored.constant_cutting_speed && state_.spindle != SpindleState::Stopped)
+    restored.spindle_rpm = std::abs(actual_spindle_speed(0));
   restored.thread_lead_mm = state_.thread_lead_mm;
   restored.thread_lead_axis = state_.thread_lead_axis;
   state_ = std::move(restored);

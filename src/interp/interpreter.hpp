@@ -392,6 +392,7 @@ class Interpreter {
     // PathElement::run_up_start / run_up_wait); 0: a ramp SETMS brought back, estimated here.
     uint32_t id = 0;
   };
+  void settle_spindles_at_stop();  // M0/M1: every ramp done, no braking left
   SpindleCommand spindle_command_;
   SpindleRunUp run_up_;
   uint32_t run_up_count_ = 0;

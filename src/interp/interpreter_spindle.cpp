@@ -110,9 +110,11 @@ double Interpreter::within_lims(const BlockContext& ctx, double rpm) {
 }
 
 double Interpreter::g96_speed_ceiling() const {
-  // Under G96 the speed may rise up to MD35100, LIMS and the G26 limit, whichever is lowest.
+  // Under G96 the speed may rise up to MD35100, LIMS and the G26 limit, whichever is lowest (LIMS
+  // acts under every G96 form; read directly, so that the G96 speed a ramp leaves from is right
+  // after G95 has already ended G96 in the state).
   double max_rpm = profile_.max_spindle_speed_rpm;
-  if (lims_ceiling() > 0) max_rpm = std::min(max_rpm, lims_ceiling());
+  if (state_.spindle_speed_limit > 0) max_rpm = std::min(max_rpm, state_.spindle_speed_limit);
   if (spindle_max_rpm_ > 0) max_rpm = std::min(max_rpm, spindle_max_rpm_);
   return max_rpm;
 }

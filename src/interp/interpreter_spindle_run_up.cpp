@@ -84,6 +84,21 @@ void Interpreter::note_spindle_change() {
   }
 }
 
+void Interpreter::settle_spindles_at_stop() {
+  // M0/M1 wait for the operator, far longer than any ramp (a dry run counts no time for it): the
+  // spindles reach their set speeds meanwhile, a braking one stands (M5 M0 then S2000 M3 runs up
+  // from rest, a cut after the stop does not wait for a ramp begun before it).
+  auto settle = [this](SpindleRunUp& ramp) {
+    ramp.from_rpm = ramp.to_rpm;
+    ramp.since_s = nominal_time_s_;
+    ramp.since_least_s = least_time_s_;
+    ramp.pending = false;
+  };
+  settle(run_up_);
+  for (auto& [n, s] : other_spindles_) settle(s.run_up);
+  master_braking_ = {};
+}
+
 void Interpreter::become_master_run_up(const SpindleCommand& command, const SpindleRunUp& ramp) {
   // SETMS: the new master's ramp, begun under the old master, is what the next cut waits for
   // (nothing once it is in range); its start is not marked for the planner.
