@@ -340,8 +340,9 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   }
   constexpr double kTurn = 360.0;
   const auto other = other_spindles_.find(number);
-  // The master's actual speed (under G96 the one at the tool's diameter, not the S of m/min).
-  const double rpm = master ? std::abs(actual_spindle_speed(0)) : other != other_spindles_.end() ? other->second.rpm : 0.0;
+  // The master's actual speed: where its run-up has come to (an SPOS soon after S.. M3 finds it
+  // below the set speed), under G96 the speed at the tool's diameter, not the S of m/min.
+  const double rpm = master ? std::abs(spindle_speed_on_ramp(0)) : other != other_spindles_.end() ? other->second.rpm : 0.0;
   const bool turning = rpm > 0 && (master ? state_.spindle != SpindleState::Stopped
                                           : other != other_spindles_.end() && other->second.turning());
   PositioningMove m;
