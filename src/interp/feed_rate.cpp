@@ -38,7 +38,7 @@ FeedResult path_feed(const ModalState& state, double spindle_rpm, double length_
     case FeedMode::PerMinute:
       return {state.feed * state.feed_unit_mm / 60.0, 0, ""};
     case FeedMode::PerRevolution:
-      if (spindle_rpm < kMinSpeed) return {0, 10860, "G95 feed per revolution needs a turning spindle (S and M3/M4)"};
+      if (spindle_rpm < kMinSpeed) return {0, 10860, "feed per revolution (G95, G96, G97 or G973) needs a turning spindle (S and M3/M4)"};
       return {state.feed * state.feed_unit_mm * spindle_rpm / 60.0, 0, ""};
     case FeedMode::InverseTime:
       // A block without length has no time to fill: give it the inverse-time value itself.

@@ -154,6 +154,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
   // G97 (G971, G972, G973) or a feed type G93/G94/G95 after G96 freezes the speed the spindle has
   // at the block start (an S in the block replaces it later).
   const bool was_g96 = state_.constant_cutting_speed;
+  const FeedMode feed_before = state_.feed_mode;
   const bool ends_g96 = ends_constant_cutting_speed(ctx.block);
   const double frozen_speed = was_g96 && ends_g96 ? spindle_speed(ctx) : -1.0;
   int group1 = -1;
@@ -231,7 +232,7 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
   if (ends_g96) combine_feed_type_and_speed_mode(ctx);
   if (frozen_speed >= 0 && !state_.constant_cutting_speed && state_.spindle != SpindleState::Stopped)
     state_.spindle_rpm = frozen_speed;
-  if (!was_g96 && state_.constant_cutting_speed) select_constant_cutting_speed(ctx);
+  if (ends_g96) note_group15_change(ctx, was_g96, feed_before, frozen_speed);
 }
 
 void Interpreter::apply_commands(BlockContext& ctx) {
@@ -512,8 +513,10 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   if (state_.spindle == SpindleState::Stopped && !tapping) return 0.0;
   if (!state_.constant_cutting_speed || tapping) {
     // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point);
-    // the warning only where the speed times the path (G95, threads, tapping).
-    const double rpm = limit_to_g25_g26(ctx, within_lims(ctx, state_.spindle_rpm), false);
+    // the warning only where the speed times the path (G95, threads, tapping). G331/G332 under
+    // G96 tap at the S last written, in rev/min (CYCLE84 sets its SST so after its SPOS).
+    const double s = state_.constant_cutting_speed ? state_.cutting_speed : state_.spindle_rpm;
+    const double rpm = limit_to_g25_g26(ctx, within_lims(ctx, s), false);
     if (rpm > profile_.max_spindle_speed_rpm) {
       if (state_.feed_mode != FeedMode::PerRevolution && !state_.thread_mode()) return profile_.max_spindle_speed_rpm;
       const std::string what = "S" + std::to_string(static_cast<long>(rpm)) +
@@ -527,6 +530,10 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   // G96: S is the cutting speed at the tool; the speed follows the diameter 2|x| (work
   // coordinates; x the SCC axis, default the transverse axis of MD20100) over the block, limited
   // by LIMS, G26 and MD35100 above and G25 below (constant_cutting_speed.hpp).
+  // The first G96 needs a cutting speed (Function Manual V1: alarm 10900); checked at the first
+  // cut, as the S may follow in the next block.
+  if (chord && state_.cutting_speed <= 0)
+    raise(ctx, 10900, "G96/G961/G962 without S, and no cutting speed programmed before");
   const double speed_mm_min = cutting_speed_mm_min(state_.cutting_speed);
   // Without a chord (G4 S, G97's frozen speed, a corner's feed) the speed the spindle has: the one
   // set for the last cut's end, which a G0 since has not changed (Fundamentals, "Constant cutting

@@ -278,7 +278,7 @@ class Interpreter {
   double lims_ceiling() const;              // LIMS where it acts (G96, G961, G962, G97), else 0
   double within_lims(const BlockContext& ctx, double rpm);  // warns
   static bool ends_constant_cutting_speed(const parser::Block& block);  // G97.., G93/G94/G95
-  void select_constant_cutting_speed(BlockContext& ctx);  // 10900 without any cutting speed
+  void note_group15_change(BlockContext& ctx, bool was_g96, FeedMode feed_before, double frozen_rpm);  // 990019
   void combine_feed_type_and_speed_mode(BlockContext& ctx);  // `G96 G95`, `G94 G97` in one block
   PathElement dwell_element(BlockContext& ctx);             // G4 F / S / S<n>=
   void warn_working_area(const BlockContext& ctx);          // G25/G26 with axis words

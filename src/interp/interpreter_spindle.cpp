@@ -48,13 +48,21 @@ bool Interpreter::ends_constant_cutting_speed(const parser::Block& block) {
   return false;
 }
 
-void Interpreter::select_constant_cutting_speed(BlockContext& ctx) {
-  // Fundamentals, "Constant cutting rate": the first G96/G961/G962 needs S (Function Manual V1:
-  // alarm 10900); a later one may leave it out and takes up the cutting speed programmed before.
-  if (state_.cutting_speed > 0 || ctx.dwell || ctx.speed_limit) return;
-  for (const AddressWord& a : ctx.block.addresses)
-    if (a.name == "S" || (numbered_spindle(a.name) > 0 && numbered_spindle(a.name) == master_spindle_)) return;
-  raise(ctx, 10900, "G96/G961/G962 without S, and no cutting speed programmed before");
+void Interpreter::note_group15_change(BlockContext& ctx, bool was_g96, FeedMode feed_before, double frozen_rpm) {
+  // Two changes the manuals state but a programmer easily misses, named (warning 990019): a feed
+  // type G93/G94/G95 after G96 ends it (the spindle keeps the speed it has, which may be the one
+  // at a far tool-change position), and G97/G973 without G96 before it select feed per
+  // revolution, so an F meant per minute (a Fanuc habit: G97 S8000 M3) becomes mm/rev.
+  const bool g97 = ctx.block.has_g(97) || ctx.block.has_g(973);
+  if (was_g96 && !state_.constant_cutting_speed && !g97 && !ctx.block.has_g(971) && !ctx.block.has_g(972) &&
+      state_.spindle != SpindleState::Stopped) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "the feed type ends G96 (the same G group 15): the spindle keeps %.0f rev/min",
+                  frozen_rpm);
+    warn_once(ctx, 990019, buf, 0);
+  } else if (!was_g96 && g97 && feed_before != FeedMode::PerRevolution && state_.feed_mode == FeedMode::PerRevolution) {
+    warn_once(ctx, 990019, "G97 selects feed per revolution (as G95): F is now mm/rev", 0);
+  }
 }
 
 void Interpreter::combine_feed_type_and_speed_mode(BlockContext& ctx) {

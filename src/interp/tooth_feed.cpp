@@ -57,7 +57,7 @@ double Interpreter::feed_mm_s(BlockContext& ctx, double length_mm, const Eigen::
     char buf[120];
     std::snprintf(buf, sizeof buf, "F%g taken as %s", state_.feed,
                   state_.feed_mode == FeedMode::InverseTime     ? "1/min (G93)"
-                  : state_.feed_mode == FeedMode::PerRevolution ? "per revolution (G95)"
+                  : state_.feed_mode == FeedMode::PerRevolution ? "per revolution (G95, G96, G97 or G973)"
                                                                 : "per minute (G94)");
     warn_once(ctx, 990016, buf, 0);
     state_.feed_type_changed = false;

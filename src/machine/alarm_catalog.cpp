@@ -77,6 +77,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990016, S::Warning, "Feed type changed (G93/G94/G95) without a new F: the previous value is read in the new unit", A::Drycut},
     AlarmInfo{990017, S::Warning, "Main program ends at the end of its file without M2, M30 or M17", A::Drycut},
     AlarmInfo{990018, S::Warning, "Name is a keyword of the control and a program in the search path: drycut calls the program", A::Drycut},
+    AlarmInfo{990019, S::Warning, "G group 15 (feed type, spindle speed mode) changed what F or S mean", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
 };
 
