@@ -1,6 +1,5 @@
 #include "interp/interpreter.hpp"
 
-#include "interp/constant_cutting_speed.hpp"
 #include "interp/interpreter_block.hpp"
 
 #include <cmath>
@@ -347,36 +346,6 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
   }
 }
 
-void Interpreter::apply_spindle_speed(BlockContext& ctx, const AddressWord& a) {
-  // S, or S<n>= the speed of spindle n (Fundamentals, "Spindle speed S"): the master's is S.
-  if (ctx.dwell) return;  // G4 S<rev>, G4 S2=<rev>
-  if (a.value < 0) raise(ctx, 12160, a.name + " must not be negative", a.column);
-  if (const int spindle = numbered_spindle(a.name); spindle > 0 && spindle != master_spindle_) {
-    // Kept for G4 S<n>= (dwell in that spindle's revolutions) and for SETMS(n).
-    if (!ctx.speed_limit) other_spindles_[spindle].rpm = a.value;
-    return;
-  }
-  if (ctx.speed_limit) {
-    set_speed_limit(ctx, a);
-    return;
-  }
-  // Under G96 S is the cutting speed, kept apart from the speed in rev/min: G97 freezes the speed
-  // without losing it, and a later G96 without S takes it up again (Fundamentals, "Constant
-  // cutting rate": "if G96 is selected again, the entry is optional").
-  (state_.constant_cutting_speed ? state_.cutting_speed : state_.spindle_rpm) = a.value;
-  state_.cutting_speed_svc = 0.0;  // S and SVC replace each other
-}
-
-int Interpreter::numbered_spindle(std::string_view name) {
-  if (name.size() < 2 || name[0] != 'S') return 0;
-  int n = 0;
-  for (size_t i = 1; i < name.size(); ++i) {
-    if (name[i] < '0' || name[i] > '9' || n > 99) return 0;
-    n = n * 10 + (name[i] - '0');
-  }
-  return n;
-}
-
 // ADIS=, ADISPOS= (G641 and MD20480 digit 4), CTOL=, ATOL[ax]= (G642..G645 and the compressor):
 // modal; a negative tolerance restores the machine/setting data value (PGA "CTOL, OTOL, ATOL").
 bool Interpreter::apply_smoothing_address(BlockContext& ctx, const AddressWord& a) {
@@ -497,57 +466,6 @@ double Interpreter::feed_unit() const {
   // G700/G710: F in the geometry's unit; G70/G71: F stays in the base system (MD10240).
   const bool inch = state_.feed_in_geometry_unit ? state_.inch : profile_.base_unit_inch;
   return inch ? kMmPerInch : 1.0;
-}
-
-double Interpreter::cutting_speed_mm_min(double speed) const {
-  // G96 S and SVC are m/min, ft/min under G70/G700 (Fundamentals, G96: "m/min (for G71/G710)
-  // or ft/min (for G70/G700)").
-  return speed * 1000.0 * (state_.inch ? 0.3048 : 1.0);
-}
-
-double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d* chord) {
-  // G331/G332 tap with the spindle in position control (SPOS before, no M3/M4): the speed is
-  // the S programmed, the direction the sign of the lead (Fundamentals, "Tapping without
-  // compensating chuck (G331, G332)").
-  const bool tapping = state_.motion == MotionMode::Tapping || state_.motion == MotionMode::TappingRetract;
-  if (state_.spindle == SpindleState::Stopped && !tapping) return 0.0;
-  if (!state_.constant_cutting_speed || tapping) {
-    // A speed above MD35100 SPIND_VELO_LIMIT is limited to it (the control limits the set-point);
-    // the warning only where the speed times the path (G95, threads, tapping). G331/G332 under
-    // G96 tap at the S last written, in rev/min (CYCLE84 sets its SST so after its SPOS).
-    const double s = state_.constant_cutting_speed ? state_.cutting_speed : state_.spindle_rpm;
-    const double rpm = limit_to_g25_g26(ctx, within_lims(ctx, s), false);
-    if (rpm > profile_.max_spindle_speed_rpm) {
-      if (state_.feed_mode != FeedMode::PerRevolution && !state_.thread_mode()) return profile_.max_spindle_speed_rpm;
-      const std::string what = "S" + std::to_string(static_cast<long>(rpm)) +
-                               " above the spindle's maximum (MD35100): limited to " +
-                               std::to_string(static_cast<long>(profile_.max_spindle_speed_rpm)) + " rpm";
-      warn_once(ctx, kValueLimited, what, 0);
-      return profile_.max_spindle_speed_rpm;
-    }
-    return rpm;
-  }
-  // G96: S is the cutting speed at the tool; the speed follows the diameter 2|x| (work
-  // coordinates; x the SCC axis, default the transverse axis of MD20100) over the block, limited
-  // by LIMS, G26 and MD35100 above and G25 below (constant_cutting_speed.hpp).
-  // The first G96 needs a cutting speed (Function Manual V1: alarm 10900); checked at the first
-  // cut, as the S may follow in the next block.
-  if (chord && state_.cutting_speed <= 0)
-    raise(ctx, 10900, "G96/G961/G962 without S, and no cutting speed programmed before");
-  const double speed_mm_min = cutting_speed_mm_min(state_.cutting_speed);
-  // Without a chord (G4 S, G97's frozen speed, a corner's feed) the speed the spindle has: the one
-  // set for the last cut's end, which a G0 since has not changed (Fundamentals, "Constant cutting
-  // rate": "G0 does not change the speed").
-  const Frame& frame = block_frame(ctx);
-  const Eigen::Vector3d tip = (chord ? position_ : g96_speed_position_) - length_applied_;
-  const double x0 = frame.to_inner(tip)[state_.cutting_speed_axis];
-  const double x1 = chord ? frame.to_inner(tip + *chord)[state_.cutting_speed_axis] : x0;
-  const double max_rpm = g96_speed_ceiling();
-  for (const double x : {x0, x1}) {  // the G25/G26 warnings where the ends of the block need them
-    const double rpm = std::abs(x) > 1e-9 ? speed_mm_min / (std::numbers::pi * 2.0 * std::abs(x)) : max_rpm;
-    limit_to_g25_g26(ctx, state_.spindle_speed_limit > 0 ? std::min(rpm, state_.spindle_speed_limit) : rpm, true);
-  }
-  return constant_cutting_speed_rpm(speed_mm_min, x0, x1, spindle_min_rpm_, max_rpm);
 }
 
 PathElement Interpreter::element_template(const BlockContext& ctx, ElementKind kind) {
