@@ -198,6 +198,7 @@ class Interpreter {
   void emit_preprocessing_stop(BlockContext& ctx, const char* label);  // STOPRE, explicit or implicit
   void emit_block_end(BlockContext& ctx);  // tool change, STOPRE, M0/M1/M2/M30 after the motion
   void add_nominal_time(const PathElement& element);
+  void add_element_time(const PathElement& e);
   // Marks a G1 element for the compressor stage (docs/compressor.md) and warns once about
   // compressor settings drycut does not model.
   void mark_for_compressor(const BlockContext& ctx, PathElement& element);
@@ -352,8 +353,8 @@ class Interpreter {
   double least_time_s_ = 0.0;
   double cutting_time_s_ = 0.0;  // the part of it at feed with a tool active
   double clock_wait_s_ = 0.0;    // clock polls not yet emitted as a dwell (poll_clock)
-  double waited_s_ = 0.0;               // clock waits emitted so far (part of nominal_time_s_)
-  double worked_at_poll_ = -1.0;         // nominal time without them at the last line that read the clock
+  uint64_t work_additions_ = 0;  // elements that added motion, dwell or tool change time (not clock waits)
+  uint64_t work_at_poll_ = ~uint64_t{0};  // work_additions_ at the last line that read the clock
   uint64_t line_at_poll_ = UINT64_MAX;   // that line
   bool block_between_compressible_ = true;  // a block not simple since the last compressible element
   std::optional<MotionMode> thread_chain_;  // the thread mode of the last motion block, if any

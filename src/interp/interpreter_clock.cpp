@@ -36,9 +36,11 @@ double rest_to_rest_s(double d, double v, double a, double j) {
 
 double Interpreter::poll_clock(uint64_t line) {
   if (line != line_at_poll_) {
-    const double worked = nominal_time_s_ - waited_s_;  // motion and dwells, not the waits
-    if (worked == worked_at_poll_) clock_wait_s_ += profile_.ipo_cycle_s;
-    worked_at_poll_ = worked;
+    // Counted, not taken as nominal time minus the waits: that difference carries rounding
+    // noise, and a pass that only waited (W1: STOPRE / IF $AC_TIMER[2]<5 GOTOB W1) then looked
+    // like work, the clock stood still and the loop guard saw the same state again (990004).
+    if (work_additions_ == work_at_poll_) clock_wait_s_ += profile_.ipo_cycle_s;
+    work_at_poll_ = work_additions_;
     line_at_poll_ = line;
   }
   return nominal_time_s();
@@ -49,15 +51,22 @@ void Interpreter::emit_clock_wait(const BlockContext& ctx) {
   PathElement e = element_template(ctx, ElementKind::Dwell);
   e.dwell_s = clock_wait_s_;
   e.label = "waiting for the clock";
-  waited_s_ += clock_wait_s_;
   clock_wait_s_ = 0.0;
+  const uint64_t work = work_additions_;
   emit(std::move(e));
+  work_additions_ = work;  // the wait is no work
 }
 
 void Interpreter::add_nominal_time(const PathElement& e) {
   // An estimate of the planned time (feed moves without ramps or corners, rapid moves from rest
   // to rest): enough for timers a program reads while the planner is still behind the
   // interpreter, and for the spindle run-up that G0 moves overlap.
+  const double before = nominal_time_s_;
+  add_element_time(e);
+  if (nominal_time_s_ != before) ++work_additions_;
+}
+
+void Interpreter::add_element_time(const PathElement& e) {
   if (e.kind == ElementKind::Dwell) {
     nominal_time_s_ += e.dwell_s;
     if (e.run_up_wait == 0) least_time_s_ += e.dwell_s;  // (a run-up wait may come out shorter)
