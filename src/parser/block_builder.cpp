@@ -262,8 +262,8 @@ class ProgramLoader::BlockBuilder {
       address_value(index.text, item);
       return;
     }
-    const double n = as_number(index, item.column);
-    if (!(n >= 0 && n <= 99) || n != std::trunc(n)) throw LineError(12430, item.column, "index must be 0..99");
+    const double n = index_from_real(as_number(index, item.column));
+    if (!(n >= 0 && n <= 99)) throw LineError(12430, item.column, "index must be 0..99");
     const int k = static_cast<int>(n);
     if (item.name == "G") {
       const double code_index = l_.eval(item.expr);

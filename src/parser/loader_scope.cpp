@@ -29,8 +29,8 @@ bool is_character_access(const Variable& v, size_t index_count) {
 
 size_t character_position(const std::string& text, const Value& index, uint32_t column) {
   if (!index.is_number()) throw LineError(12150, column, "a character index must be a number");
-  const double i = index.number;
-  if (!(i >= 0 && i < static_cast<double>(text.size())) || i != std::trunc(i))
+  const double i = index_from_real(index.number);
+  if (!(i >= 0 && i < static_cast<double>(text.size())))
     throw LineError(17020, column, "character index " + number_to_text(i) + " outside the string");
   return static_cast<size_t>(i);
 }
@@ -176,8 +176,9 @@ std::optional<Value> ProgramLoader::program_variable(std::string_view name, std:
   return std::nullopt;
 }
 
-double ProgramLoader::Scope::r_parameter(double index, uint32_t column) const {
-  if (index < 0 || index >= static_cast<double>(kRParameterCount) || index != std::trunc(index))
+double ProgramLoader::Scope::r_parameter(double real_index, uint32_t column) const {
+  const double index = index_from_real(real_index);
+  if (!(index >= 0 && index < static_cast<double>(kRParameterCount)))
     throw LineError(12430, column, "R parameter index must be 0..999");
   return loader_.r_parameters_[static_cast<size_t>(index)];
 }
@@ -337,8 +338,9 @@ void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t 
   v.set(e, eval_value(value), column);
 }
 
-void ProgramLoader::assign_r_parameter(double index, double value, uint32_t column) {
-  scope_->r_parameter(index, column);  // range check
+void ProgramLoader::assign_r_parameter(double real_index, double value, uint32_t column) {
+  scope_->r_parameter(real_index, column);  // range check
+  const double index = index_from_real(real_index);
   r_parameters_[static_cast<size_t>(index)] = value;
   r_used_ = std::max(r_used_, static_cast<size_t>(index) + 1);
 }

@@ -37,6 +37,8 @@ bool is_numeric_type(DataType t) {
   return t == DataType::Int || t == DataType::Real || t == DataType::Bool || t == DataType::Char;
 }
 
+double index_from_real(double v) { return std::round(v); }
+
 std::string number_to_text(double v) {
   if (v == std::trunc(v) && std::fabs(v) < 1e15) {
     char buf[32];

@@ -51,6 +51,11 @@ bool parse_data_type(std::string_view upper_name, DataType& out);
 std::string_view data_type_name(DataType t);
 bool is_numeric_type(DataType t);
 
+// An index (of an array, an R parameter, a string's character, G[n], M[n] ...) is an INT: a REAL
+// written there is converted as on assignment, rounded half away from zero, so `A[R1*3-1]` with
+// R1*3-1 = 2.0000000000000004 is A[2] (docs/language-rules.md "Variables").
+double index_from_real(double v);
+
 // How `<<` writes a number: integers without a decimal point, other values with up to 10
 // significant digits and no trailing zeros ("1.5", "-0.001", "3").
 std::string number_to_text(double v);

@@ -40,8 +40,8 @@ size_t Variable::element(std::span<const Value> indices, uint32_t column) const 
                                        std::to_string(indices.size()) + " given");
   size_t flat = 0;
   for (size_t k = 0; k < indices.size(); ++k) {
-    const double i = as_number(indices[k], column);
-    if (!(i >= 0 && i < dims_[k]) || i != std::trunc(i))
+    const double i = index_from_real(as_number(indices[k], column));
+    if (!(i >= 0 && i < dims_[k]))
       throw LineError(k == 0 ? 17020 : 17030, column,
                       name_ + ": index " + number_to_text(i) + " outside 0.." + std::to_string(dims_[k] - 1));
     flat = flat * dims_[k] + static_cast<size_t>(i);
