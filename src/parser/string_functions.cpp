@@ -32,16 +32,21 @@ char char_arg(std::span<const Value> args, size_t k, uint32_t column) {
   return s[0];
 }
 
-// The number a text holds, as the control reads numbers ("12", "-1.5", " 3 ").
+// The number a text holds, as the control reads numbers ("12", "-1.5", " 3 "), with a power of
+// ten written EX as in a program ("1234.9876Ex-7", Job Planning's NUMBER/ISNUMBER example).
 bool parse_number(const std::string& text, double& out) {
   size_t b = 0, e = text.size();
   while (b < e && text[b] == ' ') ++b;
   while (e > b && text[e - 1] == ' ') --e;
   if (b == e) return false;
-  const char* first = text.data() + b;
+  std::string digits = text.substr(b, e - b);
+  const size_t ex = upper_ascii(digits).find("EX");
+  if (ex != std::string::npos) digits.erase(ex + 1, 1);  // "EX" -> "E": from_chars' exponent
+  const char* first = digits.data();
+  const char* last = first + digits.size();
   if (*first == '+') ++first;
-  const auto r = std::from_chars(first, text.data() + e, out);
-  return r.ec == std::errc() && r.ptr == text.data() + e && std::isfinite(out);
+  const auto r = std::from_chars(first, last, out);
+  return r.ec == std::errc() && r.ptr == last && std::isfinite(out);
 }
 
 std::string lower_ascii(std::string s) {
