@@ -143,8 +143,9 @@ void LineParser::parse_jump_target(ParsedLine& out, JumpDirection direction, Jum
   } else if (t.kind == TokenKind::Colon && after == TokenKind::Number) {
     target.number = block_number_of(peek(1).number);  // ":30", a main block number
     ++pos_;
-  } else if (t.kind == TokenKind::String || t.kind == TokenKind::Name || t.kind == TokenKind::Number) {
-    target.expr = expression(out);  // GOTOF "LBL"<<R1
+  } else if (t.kind == TokenKind::String || t.kind == TokenKind::Name || t.kind == TokenKind::Number ||
+             t.kind == TokenKind::LParen) {
+    target.expr = expression(out);  // GOTOF "LBL"<<R1, GOTOF ("LBL"<<R1)
     return;
   } else {
     throw LineError(12080, t.column, "jump target (label or block number) expected");
