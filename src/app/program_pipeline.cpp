@@ -24,10 +24,12 @@ void add_program_options(CLI::App& cmd, ProgramOptions& options) {
 
 void add_run_options(CLI::App& cmd, ProgramOptions& options) {
   cmd.add_option("--search-path", options.search_path,
-                 "Folder searched for subprograms after the main program's folder (repeatable)");
+                 "Folder searched for subprograms after the main program's folder (repeatable)")
+      ->check(CLI::ExistingDirectory);
   cmd.add_option("--definitions", options.definition_dirs,
-                 "Folder of definition files (GUD/MAC .DEF) read before the program (repeatable); "
-                 "*.DEF beside the main program are always read");
+                 "Folder of definition files (NAME.DEF or _N_NAME_DEF: GUD, macros) or one such file, "
+                 "read before the program (repeatable); those beside the main program are always read")
+      ->check(CLI::ExistingPath);
   cmd.add_flag("--no-standard-cycles", options.no_standard_cycles,
                "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
   cmd.add_option("--machine", options.machine_file,

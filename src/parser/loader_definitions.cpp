@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parser/ascii_case.hpp"
 #include "parser/line_error.hpp"
 #include "parser/loader_frame.hpp"
 #include "parser/text_decoding.hpp"
@@ -31,6 +32,16 @@ size_t defined_name_start(std::string_view line) {
     if ((line[i + k] & ~0x20) != "DEFINE"[k]) return std::string_view::npos;
   if (is_name_char(line[i + 6])) return std::string_view::npos;
   return line.find_first_not_of(" \t", i + 6);
+}
+
+// NAME.DEF as drycut and the control's editor name them, or the control's own file name
+// _N_NAME_DEF (`_N_UGUD_DEF`, `_N_SMAC_DEF`) as an archive or a copy of the NC's data holds it.
+bool is_definition_file_name(const std::string& file_name) {
+  const std::string name = upper_ascii(file_name);
+  const auto ends_with = [&](std::string_view tail) {
+    return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  return ends_with(".DEF") || (name.rfind("_N_", 0) == 0 && ends_with("_DEF") && name.size() > 7);
 }
 
 }  // namespace
@@ -152,10 +163,12 @@ void ProgramLoader::read_definition_files(const std::filesystem::path& main_fold
     if (std::find(read.begin(), read.end(), canonical) != read.end()) continue;
     read.push_back(canonical);
     std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-      std::string ext = entry.path().extension().string();
-      for (char& c : ext) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
-      if (ext == ".DEF" && entry.is_regular_file(ec)) files.push_back(entry.path());
+    if (std::filesystem::is_regular_file(dir, ec)) {
+      files.push_back(dir);  // --definitions UGUD.DEF: that file, whatever its name
+    } else {
+      for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+        if (is_definition_file_name(entry.path().filename().string()) && entry.is_regular_file(ec))
+          files.push_back(entry.path());
     }
     std::sort(files.begin(), files.end());
     for (const auto& file : files) read_definition_file(file);

@@ -1,5 +1,5 @@
 // The `drycut check` command-line contract: exit codes 0/1/2, the summary line, --json,
-// --search-path, --max-steps.
+// --search-path, --definitions, --max-steps.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -127,6 +127,37 @@ TEST_F(CheckCommand, MissingMainFileIsUsageErrorExitTwo) {
 TEST_F(CheckCommand, BadFlagIsUsageErrorExitTwo) {
   EXPECT_EQ(run(path("MAIN.MPF") + " --no-such-flag").exit_code, 2);
   EXPECT_EQ(run("").exit_code, 2);
+}
+
+// A folder or file named on the command line that does not exist is a usage error (exit 2):
+// before 2026-11-29 it was ignored, and a typo in a definition folder showed up later as
+// alarms about undefined names in a program that is correct.
+TEST_F(CheckCommand, NonexistentSearchPathOrDefinitionsIsUsageError) {
+  const CliRun s = run(path("MAIN.MPF") + " --search-path " + path("no_such_folder"), true);
+  EXPECT_EQ(s.exit_code, 2) << s.out;
+  EXPECT_NE(s.out.find("no_such_folder"), std::string::npos) << s.out;
+  const CliRun d = run(path("MAIN.MPF") + " --search-path " + path("subs") + " --definitions " + path("NO.DEF"), true);
+  EXPECT_EQ(d.exit_code, 2) << d.out;
+  EXPECT_NE(d.out.find("NO.DEF"), std::string::npos) << d.out;
+}
+
+// GUD definitions come as NAME.DEF or under the control's own file name _N_NAME_DEF (as in an
+// archive of the NC's data), beside the program or in a --definitions folder; --definitions
+// may also name one file, whatever its name.
+TEST_F(CheckCommand, DefinitionFilesByControlNameOrNamedFile) {
+  write("GUD.MPF", "IF (_TOOL_MAX<>12) OR (_FEED_MAX<>3000) GOTOF FAIL\nG1 X1 F100\nM30\nFAIL: SETAL(65000)\nM30\n");
+  const CliRun undefined = run(path("GUD.MPF"));
+  EXPECT_EQ(undefined.exit_code, 1) << "without the definitions the names are unknown: " << undefined.out;
+  write("_N_UGUD_DEF", "%_N_UGUD_DEF\n;$PATH=/_N_DEF_DIR\nDEF NCK INT _TOOL_MAX=12\nM30\n");
+  fs::create_directories(dir_ / "machine");
+  write("machine/feeds.txt", "DEF CHAN REAL _FEED_MAX=3000\nM30\n");
+  const CliRun r = run(path("GUD.MPF") + " --definitions " + path("machine/feeds.txt"), true);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  fs::create_directories(dir_ / "gud");
+  fs::rename(dir_ / "_N_UGUD_DEF", dir_ / "gud" / "_n_ugud_def");  // any case, in a --definitions folder
+  const CliRun folder = run(path("GUD.MPF") + " --definitions " + path("gud") + " --definitions " +
+                            path("machine/feeds.txt"), true);
+  EXPECT_EQ(folder.exit_code, 0) << folder.out;
 }
 
 TEST_F(CheckCommand, MaxStepsTurnsAnEndlessLoopIntoAnAlarm) {
