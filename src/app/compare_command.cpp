@@ -26,7 +26,8 @@ void register_compare(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand("compare", "Run several programs and compare time, feed, dips, size, deviation");
   cmd->add_option("PROGRAMS", o->programs, "Main programs (.MPF)")->required();
-  cmd->add_option("--search-path", o->program.search_path, "Folder searched for subprograms (repeatable)");
+  cmd->add_option("--search-path", o->program.search_path, "Folder searched for subprograms (repeatable)")
+      ->check(CLI::ExistingDirectory);
   cmd->add_flag("--no-standard-cycles", o->program.no_standard_cycles,
                 "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
   cmd->add_option("--machine", o->program.machine_file, "Machine profile JSON (default: the embedded profile)");
