@@ -45,9 +45,13 @@ bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) 
     warn_once(ctx, "axis " + a.name + " is not in the machine profile (its moves are not simulated)", a.column);
     return true;
   }
-  if (is_orientation_word(a.name)) {
+  if (is_orientation_word(a.name) && unmodelled_transformation_ == "TRAORI") {
     // A block that only turns the tool takes time on the machine and none here.
     warn_once(ctx, "tool orientation A2/B2/C2, A3/B3/C3, A4..C5 (the rotary axes' moves for it are not simulated)", a.column);
+    return true;
+  }
+  if (is_orientation_word(a.name)) {  // without TRAORI, C2= is first an axis (a second C axis)
+    warn_once(ctx, "axis " + a.name + " is not in the machine profile, or a tool orientation with TRAORI not seen (not simulated)", a.column);
     return true;
   }
   return note_unknown_axis_word(ctx, a);
@@ -64,12 +68,7 @@ bool Interpreter::note_unknown_axis_word(BlockContext& ctx, const AddressWord& a
                 a.column);
     return true;
   }
-  // Q and E are assignable addresses (axis names on some machines); X2, Z3, U1 ... extended
-  // axis addresses of axes the profile lacks.
-  const bool lone_assignable = n == "Q" || n == "E";
-  const bool extended_axis = n.size() > 1 && std::string_view("XYZABCUVWQE").find(n[0]) != std::string_view::npos &&
-                             n.find_first_not_of("0123456789", 1) == std::string_view::npos;
-  if (!lone_assignable && !extended_axis) return false;
+  if (!is_extended_axis_address(n)) return false;
   warn_once(ctx, "axis " + a.name + " is not in the machine profile (its moves are not simulated)", a.column);
   return true;
 }
@@ -78,7 +77,7 @@ bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWor
   if (c.name == "FGROUP") {
     std::vector<std::string> names;
     for (auto& n : text_args(c)) {
-      if (!n.empty() && axis_index(n) < 0 && extra_axes_.index(n) < 0 && is_axis_letter_name(n))
+      if (!n.empty() && axis_index(n) < 0 && extra_axes_.index(n) < 0 && is_unsimulated_axis_name(n))
         warn_once(ctx, "FGROUP: axis " + n + " is not in the machine profile", c.column);
       else
         names.push_back(std::move(n));
@@ -91,7 +90,7 @@ bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWor
     if (c.args.empty()) raise(ctx, 12080, "WAITP needs an axis", c.column);
     for (const auto& axis : text_args(c)) {
       if (extra_axes_.index(axis) < 0 && axis_index(axis) < 0) {
-        if (!is_axis_letter_name(axis)) raise(ctx, 12550, "WAITP: " + axis + " is not an axis of the channel", c.column);
+        if (!is_unsimulated_axis_name(axis)) raise(ctx, 12550, "WAITP: " + axis + " is not an axis of the channel", c.column);
         warn_once(ctx, "WAITP: axis " + axis + " is not in the machine profile", c.column);
         continue;
       }
@@ -172,7 +171,7 @@ void Interpreter::apply_axis_words(BlockContext& ctx) {
 bool Interpreter::names_channel_axis(const std::string& name) const {
   // X/Y/Z, the profile's extra axes, an axis letter the profile lacks (warned where used) or a
   // spindle SP<n>: an axis-indexed word (FA[..], ACC[..]) with any other name is alarm 12550.
-  return axis_index(name) >= 0 || extra_axes_.index(name) >= 0 || is_axis_letter_name(name) ||
+  return axis_index(name) >= 0 || extra_axes_.index(name) >= 0 || is_unsimulated_axis_name(name) ||
          is_spindle_axis_name(name);
 }
 
@@ -306,7 +305,7 @@ void Interpreter::position_geometry_axes(BlockContext& ctx, std::vector<ExtraAxi
 void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
   const int k = extra_axes_.index(w.axis);
   if (k < 0) {  // geometry axes are moved by position_geometry_axes
-    if (!is_axis_letter_name(w.axis)) raise(ctx, 12550, "POS[" + w.axis + "]: not an axis of the channel", w.column);
+    if (!is_unsimulated_axis_name(w.axis)) raise(ctx, 12550, "POS[" + w.axis + "]: not an axis of the channel", w.column);
     warn_once(ctx, std::string(w.kind == AxisWordKind::Pos ? "POS" : "POSA") + "[" + w.axis +
                        "] (axis " + w.axis + " is not in the machine profile; it does not move)", w.column);
     return;

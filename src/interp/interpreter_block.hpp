@@ -55,6 +55,21 @@ inline bool is_axis_letter_name(std::string_view n) {
   return n.size() == 1 && std::string_view("ABCUVW").find(n[0]) != std::string_view::npos;
 }
 
+// Extended axis addresses, an axis letter with a number (X2, Z3, C2, U1; Fundamentals, "Axis
+// types"), and the lone assignable addresses Q and E: axes of the channel on machines whose
+// profile lacks them. Together with the letters above and the machine axis names X1/Y1/Z1 they
+// are the names drycut takes as an axis it does not simulate: warned wherever they stand (a
+// word, POS[..], FA[..], WAITP(..), DIAMONA[..], ACC[..], FGROUP(..)), never an alarm.
+inline bool is_extended_axis_address(std::string_view n) {
+  if (n == "Q" || n == "E") return true;
+  return n.size() > 1 && std::string_view("XYZABCUVWQE").find(n[0]) != std::string_view::npos &&
+         n.find_first_not_of("0123456789", 1) == std::string_view::npos;
+}
+
+inline bool is_unsimulated_axis_name(std::string_view n) {
+  return is_axis_letter_name(n) || is_extended_axis_address(n) || machine_axis_index(n) >= 0;
+}
+
 // A2/B2/C2 (orientation angles), A3/B3/C3 (direction vector), A4..C5 (surface normals): the tool
 // orientation a 5-axis post writes in every block under TRAORI (Job Planning, "Three, four and
 // five axis transformation"). drycut does not model orientation: warned, never an alarm; the

@@ -37,7 +37,7 @@ bool Interpreter::apply_turning_command(BlockContext& ctx, const parser::Command
   const std::string axis = axis_argument(c);
   const int i = axis_index(axis);
   if (i < 0) {
-    if (axis.empty() || (!is_axis_letter_name(axis) && extra_axes_.index(axis) < 0))
+    if (axis.empty() || (!is_unsimulated_axis_name(axis) && extra_axes_.index(axis) < 0))
       raise(ctx, 12550, c.name + "[" + axis + "]: not an axis of the channel", c.column);
     warn_once(ctx, c.name + "[" + axis + "] (only the geometry axes X, Y, Z are modelled)", c.column);
     return true;
