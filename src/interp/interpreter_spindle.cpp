@@ -62,7 +62,8 @@ void Interpreter::note_group15_change(BlockContext& ctx, bool was_g96, FeedMode 
     std::snprintf(buf, sizeof buf, "the feed type ends G96 (the same G group 15): the spindle keeps %.0f rev/min",
                   frozen_rpm);
     warn_once(ctx, 990019, buf, 0);
-  } else if (!was_g96 && g97 && feed_before != FeedMode::PerRevolution && state_.feed_mode == FeedMode::PerRevolution) {
+  } else if (!was_g96 && g97 && !ctx.block.has_g(95) && feed_before != FeedMode::PerRevolution &&
+             state_.feed_mode == FeedMode::PerRevolution) {  // (G95 G97 in one block says it itself)
     warn_once(ctx, 990019, "G97 selects feed per revolution (as G95): F is now mm/rev", 0);
   }
 }

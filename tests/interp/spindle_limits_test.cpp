@@ -86,5 +86,19 @@ TEST(DwellRevolutions, UnknownSpeedOfAnotherSpindleWarns) {
   EXPECT_GE(warnings_with(*r, 990002, "speed of spindle 2 is not known"), 1u);
 }
 
+
+TEST(SpindleLimits, G97SelectingFeedPerRevolutionIsWarnedOnlyWhenNotWrittenBeside) {
+  // G94 ... G97 S800 M3 makes a later F mm/rev (warning 990019); G95 G97 S800 M3 says so in
+  // its own block: no warning. Either way F0.1 at 800 rev/min is 80 mm/min = 4/3 mm/s.
+  auto hidden = run_program("G94\nG97 S800 M3\nG1 X10 F0.1\nM30\n");
+  auto written = run_program("G94\nG95 G97 S800 M3\nG1 X10 F0.1\nM30\n");
+  ASSERT_FALSE(hidden->alarm) << hidden->alarm->format();
+  ASSERT_FALSE(written->alarm) << written->alarm->format();
+  EXPECT_EQ(warnings_with(*hidden, 990019, "G97 selects feed per revolution"), 1u);
+  EXPECT_EQ(warnings_with(*written, 990019, ""), 0u);
+  EXPECT_NEAR(hidden->sink.motions()[0].feed_mm_s, 80.0 / 60.0, 1e-12);
+  EXPECT_NEAR(written->sink.motions()[0].feed_mm_s, 80.0 / 60.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace drycut::interp::testing
