@@ -45,13 +45,11 @@ bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) 
     warn_once(ctx, "axis " + a.name + " is not in the machine profile (its moves are not simulated)", a.column);
     return true;
   }
-  if (is_orientation_word(a.name) && unmodelled_transformation_ == "TRAORI") {
-    // A block that only turns the tool takes time on the machine and none here.
-    warn_once(ctx, "tool orientation A2/B2/C2, A3/B3/C3, A4..C5 (the rotary axes' moves for it are not simulated)", a.column);
-    return true;
-  }
-  if (is_orientation_word(a.name)) {  // without TRAORI, C2= is first an axis (a second C axis)
-    warn_once(ctx, "axis " + a.name + " is not in the machine profile, or a tool orientation with TRAORI not seen (not simulated)", a.column);
+  if (is_orientation_word(a.name)) {
+    // A block that only turns the tool takes time on the machine and none here. The same names
+    // are extended addresses of axes (a second C axis, C2) on a machine without TRAORI.
+    warn_once(ctx, "tool orientation A2/B2/C2, A3/B3/C3, A4..C5, or axes of these names the profile lacks "
+                   "(the rotary axes' moves are not simulated)", a.column);
     return true;
   }
   return note_unknown_axis_word(ctx, a);
