@@ -77,8 +77,21 @@ void Interpreter::add_element_time(const PathElement& e) {
     least_time_s_ += profile_.tool_change_time_s;
     return;
   }
+  if (e.kind == ElementKind::Positioning) {
+    // POS/SPOS end with their block: the slowest axis from rest to rest (SPOS of a turning
+    // spindle brakes first). POSA/SPOSA run beside the program and add nothing here.
+    double longest = 0.0;
+    for (const PositioningMove& m : e.positioning)
+      if (m.block_synchronous)
+        longest = std::max(longest, m.lead_time_s + rest_to_rest_s(m.travel, m.velocity, m.accel, m.jerk));
+    nominal_time_s_ += longest;
+    least_time_s_ += longest;
+    return;
+  }
   if (!e.is_motion() || !e.curve) return;
-  const double length = e.curve->length();
+  // The length F refers to and the planner plans along: with A, C, U ... moving, their travel
+  // counts (a G0 C90 or G1 A90 alone has no geometry length and took no time before 2026-11-29).
+  const double length = e.path_length();
   if (!e.rapid) {
     if (e.feed_mm_s <= 0) return;
     nominal_time_s_ += length / e.feed_mm_s;
@@ -99,7 +112,7 @@ Interpreter::RapidLimits Interpreter::rapid_limits(const PathElement& e, double 
   // j_i/|u_i| besides the path jerk), with the G0 factors, the dynamic group and
   // ACC/VELOLIM/JERKLIM, as the planner's element limits (motion/element_dynamics.cpp) take them.
   if (length <= 0) return {};
-  const Eigen::Vector3d u = (e.curve->end() - e.curve->start()) / length;
+  const Eigen::Vector3d u = (e.curve->end() - e.curve->start()) / length;  // length: path_length()
   const machine::DynamicGroupFactors& group = profile_.dynamic_groups[static_cast<size_t>(e.dynamics.group)];
   const bool soft = e.dynamics.profile == AccelProfile::Soft;
   double v = std::numeric_limits<double>::infinity(), a = v;
@@ -111,6 +124,14 @@ Interpreter::RapidLimits Interpreter::rapid_limits(const PathElement& e, double 
     v = std::min(v, axis.max_velocity_mm_s * e.dynamics.limits.velocity[i] / t);
     a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * e.dynamics.limits.accel[i] * profile_.g0_accel_factor / t);
     if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * e.dynamics.limits.jerk[i] * profile_.g0_jerk_factor / t);
+  }
+  for (const ExtraAxisMove& m : e.extra_axes) {  // each at its own rapid limits
+    const double t = std::abs(m.travel) / length;
+    if (t < 1e-12 || m.axis < 0 || static_cast<size_t>(m.axis) >= profile_.extra_axes.size()) continue;
+    const auto& axis = profile_.extra_axes[static_cast<size_t>(m.axis)];
+    v = std::min(v, axis.max_velocity_mm_s / t);
+    a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * profile_.g0_accel_factor / t);
+    if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * profile_.g0_jerk_factor / t);
   }
   return {v, a, j};
 }
