@@ -336,6 +336,12 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     extra_axes_.clear_running(name);
   }
   constexpr double kTurn = 360.0;
+  // The spindle is a modulo axis in position control: DC/ACP/ACN take 0 <= v < 360, as on a
+  // modulo rotary axis (16830; SPOS=400 without them is reduced like C=AC(400)).
+  const bool direction = w.mode == ValueMode::Direct || w.mode == ValueMode::AbsolutePositive ||
+                         w.mode == ValueMode::AbsoluteNegative;
+  if (direction && !(w.value >= 0 && w.value < kTurn))
+    raise(ctx, 16830, "SPOS: position " + parser::number_to_text(w.value) + " with DC/ACP/ACN outside 0 .. 360", w.column);
   const auto other = other_spindles_.find(number);
   // The master's actual speed: where its run-up has come to (an SPOS soon after S.. M3 finds it
   // below the set speed), under G96 the speed at the tool's diameter, not the S of m/min.
