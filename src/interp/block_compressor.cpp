@@ -24,9 +24,11 @@ bool same_dynamics(const DynamicsMode& a, const DynamicsMode& b) {
 }
 
 // A straight G1 element of a simple block (not one the compensation inserted: a transition
-// circle or connector keeps its own geometry).
+// circle or connector keeps its own geometry; the pieces to and from the offsets' intersection
+// at a flat outside corner are their blocks lengthened and join).
 bool compressible_line(const PathElement& e) {
-  return e.compressible && e.kind == ElementKind::Line && !e.inserted && e.curve && e.compressor != Compressor::Off;
+  return e.compressible && e.kind == ElementKind::Line && (!e.inserted || e.offset_extension) && e.curve &&
+         e.compressor != Compressor::Off;
 }
 
 }  // namespace
@@ -149,12 +151,16 @@ void BlockCompressor::flush(bool carry) {
       for (size_t i = begin; i < next_element; ++i) next_.consume(std::move(elements_[i]));
       continue;
     }
+    // Blocks, not elements: the pieces to an offsets' intersection belong to their block.
+    const auto blocks = std::count_if(elements_.begin() + static_cast<long>(begin), elements_.begin() + static_cast<long>(next_element),
+                                      [](const PathElement& e) { return !e.offset_extension; });
     PathElement out = std::move(elements_[begin]);
     merge_extra_axes(out, begin + 1, next_element);
     out.kind = ElementKind::SplineSpan;
     out.curve = span.curve;
     out.label = compressor_label(run_mode_);
-    out.compressed_blocks = static_cast<uint32_t>(next_element - begin);
+    out.inserted = out.offset_extension = false;  // a span of programmed blocks
+    out.compressed_blocks = static_cast<uint32_t>(std::max<long>(1, blocks));
     out.compress_deviation_mm = span.deviation_mm;
     next_.consume(std::move(out));
   }

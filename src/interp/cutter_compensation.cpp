@@ -274,10 +274,11 @@ void CutterCompensation::add_motion(const PathElement& element) {
   if (const auto previous = last_piece_index()) {
     const OffsetPiece& before = *window_[*previous].piece;
     const Vec3 from = before.end(), to = piece.start();
-    auto push_corner = [&](const CurvePtr& curve, bool gap_bridge) {
+    auto push_corner = [&](const CurvePtr& curve, bool gap_bridge, bool extension = false) {
       PathElement corner = element;
       corner.kind = kind_of(curve, ElementKind::Line);
       corner.inserted = true;
+      corner.offset_extension = extension;
       window_.push_back(Item{std::move(corner), OffsetPiece(curve, 0.0, plane_), block_serial_, gap_bridge});
     };
     if (plane_.project(to - from).norm() >= kJoinTolerance) {
@@ -285,9 +286,10 @@ void CutterCompensation::add_motion(const PathElement& element) {
       if (before.offset() != d) {
         push_corner(std::make_shared<geometry::LineCurve>(from, to), false);  // radius or side changed
       } else if (is_outside_corner(t_in, t_out, d, plane_)) {
-        for (const auto& curve : outside_corner_curves(element.curve->start(), t_in, t_out, d,
-                                                       corner_rule(element.compensation), plane_))
-          push_corner(curve, false);
+        const auto curves =
+            outside_corner_curves(element.curve->start(), t_in, t_out, d, corner_rule(element.compensation), plane_);
+        const bool intersection = curves.size() == 2;  // two straight pieces: the offsets meet (else a circle)
+        for (const auto& curve : curves) push_corner(curve, false, intersection);
       } else {
         // Inside corner: the bridge closes the raw path; the crossing search cuts it out again.
         push_corner(std::make_shared<geometry::LineCurve>(from, to), true);

@@ -34,7 +34,8 @@ geometry::Vec3 plane_direction(const geometry::Vec3& v, const CompensationPlane&
 bool is_outside_corner(const geometry::Vec3& t_in, const geometry::Vec3& t_out, double offset_mm,
                        const CompensationPlane& plane);
 
-// Curves from corner + d n x t_in to corner + d n x t_out around an outside corner.
+// Curves from corner + d n x t_in to corner + d n x t_out around an outside corner: two straight
+// pieces meeting at the offsets' intersection, or one transition circle.
 std::vector<geometry::CurvePtr> outside_corner_curves(const geometry::Vec3& corner, const geometry::Vec3& t_in,
                                                       const geometry::Vec3& t_out, double offset_mm,
                                                       const OutsideCornerRule& rule,

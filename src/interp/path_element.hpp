@@ -150,6 +150,10 @@ struct PathElement {
   // cut-out stretch). It is not an NC block of its own, so the block-change (short-block) limit
   // does not apply to it.
   bool inserted = false;
+  // Of those: a straight piece to or from the offsets' intersection at an outside corner (G451,
+  // or G450 flatter than MD20230). On the control that is the adjacent block lengthened, so the
+  // compressor joins it with its neighbours (cutter_compensation.cpp, block_compressor.cpp).
+  bool offset_extension = false;
   DynamicsMode dynamics;
   double dwell_s = 0.0;          // Dwell
   // The spindle run-up (interp/interpreter_spindle_run_up.cpp): the element that begins ramp

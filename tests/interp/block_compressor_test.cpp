@@ -2,9 +2,13 @@
 // which blocks join a run, what breaks it, the order of what passes, the flush window.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <functional>
+#include <numbers>
 
 #include "interp/block_compressor.hpp"
+#include "interp/cutter_compensation.hpp"
 #include "interp_test_support.hpp"
 
 namespace drycut::interp {
@@ -223,6 +227,50 @@ TEST(BlockCompressor, CtolHoldsUnderTheAxisToleranceMode) {
   const auto ctol = compressed("G0 X0 Y0 Z0\nG64 COMPCAD F3000\nCTOL=0.002 ATOL[X]=0.05 ATOL[Y]=0.05\n" + wave + "M30\n", p);
   EXPECT_GT(largest(data), 0.002);
   EXPECT_LE(largest(ctol), 0.002 + 1e-12);
+}
+
+
+TEST(BlockCompressor, FlatOutsideCornersUnderG42StayInTheRun) {
+  // A circle R = 20 in 360 chords of 1 deg, CCW, tool radius 2 on the right (G42: outside). Each
+  // joint turns 1 deg, flatter than MD20230 (10 deg): the offsets meet at their intersection, on
+  // the control the blocks lengthened. Until 2026-11-29 the two pieces to and from it were
+  // inserted elements that ended every run, so nothing was compressed. Now the runs hold: the
+  // spans carry (nearly) all 360 blocks and stay within the axis tolerance (0.1 mm) of the
+  // offset polygon, whose edges lie R cos(0.5 deg) + 2 from the centre and whose vertices
+  // (R cos(0.5 deg) + 2) / cos(0.5 deg) from it.
+  const auto profile = testing::test_profile();
+  constexpr double kR = 20.0, kRadius = 2.0, kTol = 0.1;
+  std::string text = "T1 D1 M6\nG0 X30 Y0 Z0\nG64 COMPCAD F3000\nG42 G1 X20 Y0\n";
+  char buf[64];
+  for (int k = 1; k <= 360; ++k) {
+    const double a = k * std::numbers::pi / 180.0;
+    std::snprintf(buf, sizeof buf, "X%.6f Y%.6f\n", kR * std::cos(a), kR * std::sin(a));
+    text += buf;
+  }
+  text += "G40 G1 X30 Y0\nM30\n";
+  auto run = testing::run_program(text, profile);
+  ASSERT_FALSE(run->alarm) << run->alarm->format();
+  CollectingSink out;
+  BlockCompressor compressor(out, profile);
+  Diagnostics diagnostics;
+  CutterCompensation compensation(compressor, profile, diagnostics);
+  for (auto& e : run->sink.elements) compensation.consume(PathElement(e));
+  compensation.finish();
+  uint32_t blocks = 0;
+  const double half = 0.5 * std::numbers::pi / 180.0;
+  const double edge = kR * std::cos(half) + kRadius, vertex = edge / std::cos(half);
+  for (const PathElement& e : out.motions()) {
+    if (e.kind != ElementKind::SplineSpan) continue;
+    blocks += e.compressed_blocks;
+    for (int i = 0; i <= 20; ++i) {
+      const Eigen::Vector3d p = e.curve->at(e.curve->length() * i / 20.0).position;
+      const double rho = std::hypot(p.x(), p.y());
+      EXPECT_GE(rho, edge - kTol - 1e-9);
+      EXPECT_LE(rho, vertex + kTol + 1e-9);
+    }
+  }
+  EXPECT_GE(blocks, 355u);
+  EXPECT_LE(blocks, 360u);
 }
 
 }  // namespace
