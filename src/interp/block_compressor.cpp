@@ -126,6 +126,25 @@ void BlockCompressor::finish() {
   next_.finish();
 }
 
+std::vector<SpanBlock> BlockCompressor::blocks_of_span(const geometry::FittedSpan& span, size_t begin, size_t end) {
+  // The span's parameter is the chord length of the programmed points (compressor_fit.hpp,
+  // step 2), so a block's end lies at its share of that chord length along the span.
+  double total = 0.0;
+  for (size_t p = span.first + 1; p <= span.last; ++p) total += (points_[p] - points_[p - 1]).norm();
+  std::vector<SpanBlock> out;
+  out.reserve(end - begin);
+  double chord = 0.0;
+  size_t p = span.first;
+  for (size_t i = begin; i < end; ++i) {
+    for (; p < point_of_[i]; ++p) chord += (points_[p + 1] - points_[p]).norm();
+    if (elements_[i].offset_extension) continue;  // its block follows
+    const float share = total > 0.0 ? static_cast<float>(chord / total) : 1.0f;
+    if (i == begin) out.push_back(SpanBlock{share, elements_[i].source});  // (the span keeps its source)
+    else out.push_back(SpanBlock{share, std::move(elements_[i].source)});
+  }
+  return out;
+}
+
 void BlockCompressor::flush(bool carry) {
   if (elements_.empty()) {
     points_.clear();
@@ -154,7 +173,9 @@ void BlockCompressor::flush(bool carry) {
     // Blocks, not elements: the pieces to an offsets' intersection belong to their block.
     const auto blocks = std::count_if(elements_.begin() + static_cast<long>(begin), elements_.begin() + static_cast<long>(next_element),
                                       [](const PathElement& e) { return !e.offset_extension; });
+    std::vector<SpanBlock> span_blocks = blocks_of_span(span, begin, next_element);
     PathElement out = std::move(elements_[begin]);
+    out.span_blocks = std::move(span_blocks);
     merge_extra_axes(out, begin + 1, next_element);
     out.kind = ElementKind::SplineSpan;
     out.curve = span.curve;

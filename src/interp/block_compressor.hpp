@@ -47,6 +47,9 @@ class BlockCompressor final : public ElementSink {
   // Fits the run and hands on its elements in order. carry: the run goes on from its last
   // point (a window cut, `flush_points`); else it is closed.
   void flush(bool carry);
+  // The blocks of elements_[begin, end) with where each ends along `span` (their sources moved
+  // out, but for the first, which the span keeps).
+  std::vector<SpanBlock> blocks_of_span(const geometry::FittedSpan& span, size_t begin, size_t end);
   // Adds the further-axis travels of elements_[from, to) to a span made from an earlier element.
   void merge_extra_axes(PathElement& span, size_t from, size_t to) const;
 

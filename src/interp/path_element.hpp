@@ -2,6 +2,7 @@
 // The canonical boundary: the one interface between interpreter and planner. The interpreter
 // turns blocks into a stream of these plain elements; the planner knows nothing else about
 // the program. Every element carries the source block it came from.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -115,6 +116,20 @@ struct ExtraAxisMove {
   double feed_weight = 1.0;
 };
 
+// A programmed block inside a compressed span: it ends at `end_share` of the span's length.
+struct SpanBlock {
+  float end_share = 0;
+  BlockRef block;
+};
+
+// The block of a span at `share` of its length (0..1): the first whose end lies at or after it.
+inline const BlockRef& span_block_at(const std::vector<SpanBlock>& blocks, const BlockRef& fallback, double share) {
+  if (blocks.empty()) return fallback;
+  const auto it = std::lower_bound(blocks.begin(), blocks.end(), share,
+                                   [](const SpanBlock& b, double s) { return b.end_share < s; });
+  return it == blocks.end() ? blocks.back().block : it->block;
+}
+
 // A positioning axis (POS/POSA, SPOS/SPOSA): its own interpolator, from rest to rest.
 struct PositioningMove {
   std::string axis;          // "A"; "S1" for spindle 1
@@ -182,6 +197,10 @@ struct PathElement {
   // compressed element) and how far it strays from their programmed end points and lines (mm).
   uint32_t compressed_blocks = 0;
   double compress_deviation_mm = 0.0;
+  // For a compressed span: the blocks it replaces, each with the share of the span's length at
+  // which its programmed end point lies, so a feed dip inside the span is reported at the block
+  // where it happens, not at the span's first (empty for every other element).
+  std::vector<SpanBlock> span_blocks;
   // Corner smoothing (src/interp/corner_smoothing.hpp): the program's settings for the block,
   // and on the output: an inserted smoothing element has smoothing_deviation_mm >= 0 (its
   // closest distance to the programmed corner it rounds); a neighbour the stage trimmed keeps

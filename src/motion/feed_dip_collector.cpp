@@ -2,7 +2,7 @@
 
 namespace drycut::motion {
 
-void FeedDipCollector::add(const BlockRef& source, double programmed_feed, double v_min, Limit limit) {
+void FeedDipCollector::add(const BlockRef& source, const BlockRef& at, double programmed_feed, double v_min, Limit limit) {
   if (!(v_min < threshold_ * programmed_feed)) {
     interrupt();
     return;
@@ -13,7 +13,8 @@ void FeedDipCollector::add(const BlockRef& source, double programmed_feed, doubl
       ++dip.element_count;
       if (v_min < dip.v_min_mm_s) {
         dip.v_min_mm_s = v_min;
-        dip.min_source = source;
+        dip.min_source = at;
+        dip.min_element = source;
         dip.programmed_feed_mm_s = programmed_feed;
         dip.limit = limit;
       }
@@ -26,7 +27,7 @@ void FeedDipCollector::add(const BlockRef& source, double programmed_feed, doubl
     ++not_listed_;
     return;
   }
-  dips_.push_back(FeedDip{source, source, v_min, programmed_feed, limit, 1});
+  dips_.push_back(FeedDip{source, at, source, v_min, programmed_feed, limit, 1});
 }
 
 void FeedDipCollector::interrupt() {

@@ -13,8 +13,9 @@ class FeedDipCollector {
  public:
   FeedDipCollector(double threshold, size_t max_dips) : threshold_(threshold), max_dips_(max_dips) {}
 
-  // A committed cutting element; v_min is its lowest velocity outside planned standstills.
-  void add(const BlockRef& source, double programmed_feed, double v_min, Limit limit);
+  // A committed cutting element; v_min is its lowest velocity outside planned standstills, in
+  // the programmed block `at` (the element's own source, or a block inside a compressed span).
+  void add(const BlockRef& source, const BlockRef& at, double programmed_feed, double v_min, Limit limit);
   // Anything that is not cutting (rapid, dwell, stop) ends the current stretch.
   void interrupt();
 

@@ -57,6 +57,7 @@ class PlanObserver {
 struct FeedDip {
   BlockRef source;               // first block of the stretch
   BlockRef min_source;           // block where the lowest velocity occurs
+  BlockRef min_element;          // the element's own source there (a compressed span's first block)
   double v_min_mm_s = 0;
   double programmed_feed_mm_s = 0;  // F of the block at the minimum
   Limit limit = Limit::Feed;     // what bound the lowest velocity

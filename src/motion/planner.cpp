@@ -428,22 +428,24 @@ struct Planner::CommitTally {
   // Lowest velocity outside planned standstills (ramps into and out of exact stops).
   double cut_min = kInf;
   Limit cut_kind = Limit::Feed;
+  double cut_s = 0;  // where along the element (arc length) it occurs
   double time = 0;
   double length = 0;
 
-  void note_cut(double vel, Limit k) {
+  void note_cut(double vel, Limit k, double s) {
     if (k != Limit::ExactStop && vel < cut_min) {
       cut_min = vel;
       cut_kind = k;
+      cut_s = s;
     }
   }
   // Moves on to the segment's end node, reached at v1 bound by k1.
-  void advance(double v1, Limit k1) {
+  void advance(double v1, Limit k1, double s) {
     if (v1 < v_min) {
       v_min = v1;
       v_min_kind = k1;
     }
-    note_cut(v1, k1);
+    note_cut(v1, k1, s);
     v = v1;
     kind = k1;
   }
@@ -462,7 +464,7 @@ void Planner::commit_front() {
                     .v_min = front_velocity_,
                     .v_max = front_velocity_,
                     .v_min_kind = front_kind_};
-  if (w.segment_count > 0) tally.note_cut(tally.v, tally.kind);
+  if (w.segment_count > 0) tally.note_cut(tally.v, tally.kind, 0.0);
   for (size_t k = 0; k < w.segment_count; ++k) commit_segment(w, segments_[k], nodes_[k + 1], tally);
   if (w.segment_count > 0) {
     position_ = e.curve->end();
@@ -505,7 +507,7 @@ void Planner::commit_segment(const WindowElement& w, const Segment& seg, const N
   tally.time += duration;
   tally.length += seg.length;
   tally.v_max = std::max(tally.v_max, peak);
-  tally.advance(v1, k1);
+  tally.advance(v1, k1, seg.s_start + seg.length);
 }
 
 // The duration of a segment run from v to v1 (`rise`: the forward ramp's anchor, `reach`: where
@@ -582,7 +584,11 @@ void Planner::add_to_summary(const interp::PathElement& e, bool moved, const Com
     const double cut_low = tally.cut_min < kInf ? tally.cut_min : tally.v_max;
     summary_.min_feed_mm_s = any_cutting_ ? std::min(summary_.min_feed_mm_s, cut_low) : cut_low;
     any_cutting_ = true;
-    if (tally.cut_min < kInf) dips_.add(e.source, e.feed_mm_s * to_contour, tally.cut_min, tally.cut_kind);
+    if (tally.cut_min < kInf) {
+      // Inside a compressed span: the programmed block at the lowest velocity.
+      const BlockRef& at = interp::span_block_at(e.span_blocks, e.source, tally.length > 0 ? tally.cut_s / tally.length : 0.0);
+      dips_.add(e.source, at, e.feed_mm_s * to_contour, tally.cut_min, tally.cut_kind);
+    }
   } else if (moved) {
     dips_.interrupt();
   }

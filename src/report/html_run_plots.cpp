@@ -172,7 +172,7 @@ RunPlots RunPlotCollector::plots() const {
 }
 
 DipLocation RunPlotCollector::locate(const motion::FeedDip& dip) const {
-  auto it = candidates_.find(BlockKey{dip.min_source.file_name(), dip.min_source.line});
+  auto it = candidates_.find(BlockKey{dip.min_element.file_name(), dip.min_element.line});
   return it == candidates_.end() ? DipLocation{} : it->second.where;
 }
 

@@ -90,13 +90,14 @@ TEST(RunPlotCollector, LocatesADipAtItsSlowestSample) {
   c.on_sample(sample(0.3, 9, 0, 9, &a.source));
   c.on_block(timing(a, 1.0, 2.0, motion::Limit::Curvature));
   motion::FeedDip dip;
-  dip.min_source = a.source;
+  dip.min_element = a.source;
+  dip.min_source = block(98);  // a block inside a compressed span: the element is what is found
   dip.v_min_mm_s = 2.0;
   const DipLocation at = c.locate(dip);
   ASSERT_TRUE(at.known);
   EXPECT_DOUBLE_EQ(at.x, 5.0);
   EXPECT_DOUBLE_EQ(at.t, 0.2);
-  dip.min_source = block(99);
+  dip.min_element = block(99);
   EXPECT_FALSE(c.locate(dip).known);
 }
 
@@ -106,7 +107,7 @@ TEST(RunPlotCollector, ExactStopsAreNotDips) {
   c.on_tool_centre(a);
   c.on_block(timing(a, 1.0, 0.0, motion::Limit::ExactStop));
   motion::FeedDip dip;
-  dip.min_source = a.source;
+  dip.min_element = a.source;
   EXPECT_FALSE(c.locate(dip).known);
 }
 
