@@ -402,6 +402,10 @@ void Interpreter::apply_m_words(BlockContext& ctx) {
       case 2: case 30: ctx.stop = StopKind::ProgramEnd; break;
       case 3: state_.spindle = SpindleState::Clockwise; break;
       case 4: state_.spindle = SpindleState::CounterClockwise; break;
+      case 70:  // the master spindle to axis mode (Function Manual S1, "Spindle modes")
+        warn_once(ctx, "M70 (the master spindle's change to axis mode: braked as by M5, the switch-over itself is not timed)",
+                  m.column);
+        [[fallthrough]];
       case 5:
         // M5 does not wait for the spindle: it brakes (MD35200) while the program goes on; an
         // SPOS/M19 before it stands finds it still turning (add_spindle_positioning).
