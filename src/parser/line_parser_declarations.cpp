@@ -14,7 +14,8 @@ namespace {
 // Attributes of GUD definitions (Job Planning, "Definition of user data"): preprocessing stop
 // (SYNR, SYNW, SYNRW), initialisation time (INIPO, INIRE, INICF), unit, limits and access rights
 // (PHU, LLI, ULI, APR..., with a value), before or after the type:
-// DEF NCK SYNR INIPO REAL PHU 1 LLI 0 ULI 1000 SPEEDLIM. None changes what drycut computes.
+// DEF NCK SYNR INIPO REAL PHU 1 LLI 0 ULI 1000 SPEEDLIM. Only the limits LLI/ULI change what
+// drycut does: a write outside them is warned (ProgramLoader::check_limits).
 bool is_definition_attribute(std::string_view w) {
   return w == "PHU" || w == "LLI" || w == "ULI" || w == "PRLOC" || w == "APR" || w == "APW" ||
          w == "APRP" || w == "APWP" || w == "APRB" || w == "APWB" || w == "SYNR" || w == "SYNW" ||
@@ -82,8 +83,12 @@ void LineParser::parse_initialiser(ParsedLine& out, DefEntry& e) {
 
 void LineParser::skip_definition_attributes(ParsedLine& out) {
   while (peek().kind == TokenKind::Name && is_definition_attribute(peek().text)) {
+    const std::string_view attribute = peek().text;
     ++pos_;
-    if (peek().kind != TokenKind::End && peek().kind != TokenKind::Name) expression(out);
+    if (peek().kind == TokenKind::End || peek().kind == TokenKind::Name) continue;
+    const ExprIndex value = expression(out);
+    if (attribute == "LLI") out.def_lower_limit = value;  // the limits are checked on writes
+    if (attribute == "ULI") out.def_upper_limit = value;
   }
 }
 

@@ -105,6 +105,8 @@ void ProgramLoader::execute_def(bool from_definition_file) {
       existing->def_line = position_.line;
       existing->standard_definition = reading_standard_definitions_;
     }
+    if (parsed_.def_lower_limit != kNoExpr) existing->lower_limit = eval(parsed_.def_lower_limit);
+    if (parsed_.def_upper_limit != kNoExpr) existing->upper_limit = eval(parsed_.def_upper_limit);
     initialise(*existing, d);
   }
 }

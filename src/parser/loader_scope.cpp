@@ -327,15 +327,26 @@ void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t 
   const ExprNode& n = parsed_.pool[value];
   if (n.op == ExprOp::Call && n.func == Function::ArraySet) {  // consecutive elements from e
     if (e + n.b > v.size()) throw LineError(17020, column, "SET writes past the end of " + v.name());
-    for (uint32_t k = 0; k < n.b; ++k) v.set(e + k, eval_value(parsed_.pool.args[n.a + k]), column);
+    for (uint32_t k = 0; k < n.b; ++k) v.set(e + k, within_limits(v, eval_value(parsed_.pool.args[n.a + k]), column), column);
     return;
   }
   if (n.op == ExprOp::Call && n.func == Function::ArrayRep) {  // element e and all after it
-    const Value x = eval_value(parsed_.pool.args[n.a]);
+    const Value x = within_limits(v, eval_value(parsed_.pool.args[n.a]), column);
     for (size_t k = e; k < v.size(); ++k) v.set(k, x, column);
     return;
   }
-  v.set(e, eval_value(value), column);
+  v.set(e, within_limits(v, eval_value(value), column), column);
+}
+
+const Value& ProgramLoader::within_limits(const Variable& v, const Value& x, uint32_t column) {
+  // DEF ... LLI/ULI (Job Planning, "Attribute: Limit values (LLI, ULI)"): the control refuses a
+  // write outside them with an alarm whose number drycut does not know, so it warns, writes the
+  // value and goes on (a warning, never a false alarm).
+  if (x.is_number() && (x.number < v.lower_limit || x.number > v.upper_limit))
+    warn(990002, v.name() + "=" + number_to_text(x.number) + " outside its limits LLI " + number_to_text(v.lower_limit) +
+                     " .. ULI " + number_to_text(v.upper_limit) + " (the control refuses the write; drycut writes it)",
+         column);
+  return x;
 }
 
 void ProgramLoader::assign_r_parameter(double real_index, double value, uint32_t column) {

@@ -119,6 +119,8 @@ struct ParsedLine {
   JumpTarget target;
   std::string_view def_type;      // INT REAL BOOL CHAR STRING AXIS FRAME
   std::string_view def_scope;     // DEF NCK / CHAN (definition files); empty: local
+  ExprIndex def_lower_limit = kNoExpr;  // DEF ... LLI <value> (attribute of the definition)
+  ExprIndex def_upper_limit = kNoExpr;  // DEF ... ULI <value>
   std::vector<DefEntry> defs;     // DEF entries; PROC parameters
   std::string_view call_name;     // CALL / PROC / EXTERN / DEFINE / REPEAT start name
   std::string_view end_label;     // REPEAT start end, CALL "PROG" BLOCK start TO end: the end label
@@ -141,6 +143,7 @@ struct ParsedLine {
     target = {};
     def_type = {};
     def_scope = {};
+    def_lower_limit = def_upper_limit = kNoExpr;
     defs.clear();
     call_name = {};
     end_label = {};

@@ -143,6 +143,8 @@ class ProgramLoader {
   // $ variables the loader answers itself: $P_SUBPAR[n], $P_PROG, $P_PROGPATH.
   std::optional<Value> program_variable(std::string_view name, std::span<const Value> indices) const;
   void assign_variable(Variable& v, uint32_t index_first, uint32_t index_count, ExprIndex value, uint32_t column);
+  // x, after warning when it lies outside v's LLI/ULI.
+  const Value& within_limits(const Variable& v, const Value& x, uint32_t column);
   void assign_r_parameter(double index, double value, uint32_t column);
   void assign_system_variable(const Item& item, Block& out);
   CallArgument call_argument(ExprIndex e);

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -32,6 +33,9 @@ class Variable {
   size_t size() const { return static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]; }
   uint32_t def_line = 0;
   bool standard_definition = false;  // from drycut's own definition files: may be defined again
+  // DEF ... LLI / ULI: the values a write may bring (a numeric variable; +-inf: none given).
+  double lower_limit = -std::numeric_limits<double>::infinity();
+  double upper_limit = std::numeric_limits<double>::infinity();
 
   // The element an index list names; throws LineError 12410 / 17020 / 17030.
   size_t element(std::span<const Value> indices, uint32_t column) const;
