@@ -429,6 +429,7 @@ class Interpreter {
     SpindleState state = SpindleState::Clockwise;  // Stopped after M<n>=5 (else assumed turning)
     SpindleCommand command;  // what its run-up last ramped to
     SpindleRunUp run_up;
+    double angle_deg = 0.0;  // where its last SPOS left it (0 at the start), as spindle_angle_
     bool turning() const { return state != SpindleState::Stopped; }
   };
   std::map<int, OtherSpindle> other_spindles_;

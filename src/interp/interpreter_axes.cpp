@@ -327,7 +327,7 @@ void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
 
 void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) {
   // SPOS= (no number) positions the master spindle (MD20090, SETMS); every spindle takes the
-  // same machine data. Only the master's angle is followed; another spindle stands where unknown.
+  // same machine data. Each spindle's angle is followed (0 at the start, where its last SPOS left it).
   const int number = w.axis.empty() ? master_spindle_ : std::atoi(w.axis.c_str());
   const bool master = number == master_spindle_;
   const std::string name = "S" + std::to_string(number);
@@ -348,6 +348,7 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   const double rpm = master ? std::abs(spindle_speed_on_ramp(0)) : other != other_spindles_.end() ? other->second.rpm : 0.0;
   const bool turning = rpm > 0 && (master ? state_.spindle != SpindleState::Stopped
                                           : other != other_spindles_.end() && other->second.turning());
+  const double angle = master ? spindle_angle_ : other != other_spindles_.end() ? other->second.angle_deg : 0.0;
   PositioningMove m;
   m.axis = name;
   m.velocity = profile_.spindle_posctrl_velo_rpm * kTurn / 60.0;
@@ -360,30 +361,30 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     const double brake_rev_s = std::max(0.0, rpm - profile_.spindle_posctrl_velo_rpm) / 60.0;
     m.lead_time_s = brake_rev_s / profile_.spindle_speedctrl_accel_rev_s2;
     m.travel = kTurn / 2;
-  } else if (!master) {
-    m.travel = kTurn / 2;  // a standing spindle whose angle drycut does not follow: half a turn
   } else if (const double braking_rpm = master_braking_.from_rpm - (nominal_time_s_ - master_braking_.since_s) * 60.0 *
                                                                      profile_.spindle_speedctrl_accel_rev_s2;
-             master_braking_.from_rpm > 0 && braking_rpm > 0) {
+             master && master_braking_.from_rpm > 0 && braking_rpm > 0) {
     // Still turning down after M5: as from rotation, at the speed it has come down to.
     m.lead_time_s = std::max(0.0, braking_rpm - profile_.spindle_posctrl_velo_rpm) / 60.0 /
                     profile_.spindle_speedctrl_accel_rev_s2;
     m.travel = kTurn / 2;
   } else {
     const ValueMode mode = w.mode == ValueMode::Default || w.mode == ValueMode::Absolute ? ValueMode::Direct : w.mode;
-    double d = wrap_modulo(w.value, kTurn) - spindle_angle_;
+    double d = wrap_modulo(w.value, kTurn) - angle;  // each spindle's own angle (0 at the start)
     if (d < 0) d += kTurn;  // now the positive way in [0, 360)
     if (mode == ValueMode::AbsoluteNegative && d > 0) d = kTurn - d;
     if (mode == ValueMode::Direct && d > kTurn / 2) d = kTurn - d;
     m.travel = d;
   }
+  const double reached = wrap_modulo(w.mode == ValueMode::Incremental ? angle + w.value : w.value, kTurn);
   if (master) {
     master_braking_ = {};
-    spindle_angle_ = wrap_modulo(w.mode == ValueMode::Incremental ? spindle_angle_ + w.value : w.value, kTurn);
+    spindle_angle_ = reached;
     state_.spindle = SpindleState::Stopped;  // in position control, stopped at the angle
     run_up_ = standing_run_up();              // a later M3/M4 ramps from standstill
   } else {
     other_spindles_[number].state = SpindleState::Stopped;
+    other_spindles_[number].angle_deg = reached;
   }
   m.block_synchronous = w.kind == AxisWordKind::SPos;
   if (!m.block_synchronous) extra_axes_.mark_running(name);

@@ -228,7 +228,7 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
   // the new master takes on (Function Manual V1, "Master spindle switchover with G96").
   const bool g96 = state_.constant_cutting_speed;
   const double leaving_rpm = g96 ? std::abs(actual_spindle_speed(0)) : state_.spindle_rpm;
-  other_spindles_[master_spindle_] = OtherSpindle{leaving_rpm, state_.spindle, spindle_command_, run_up_};
+  other_spindles_[master_spindle_] = OtherSpindle{leaving_rpm, state_.spindle, spindle_command_, run_up_, spindle_angle_};
   const auto it = other_spindles_.find(n);
   OtherSpindle next;
   if (it == other_spindles_.end()) {
@@ -239,6 +239,7 @@ void Interpreter::set_master_spindle(const BlockContext& ctx, const parser::Comm
   }
   state_.spindle_rpm = next.rpm;  // under G96 unused until a G97 freezes the new master's speed
   state_.spindle = next.state;
+  spindle_angle_ = next.angle_deg;  // each spindle keeps its angle
   master_spindle_ = n;
   become_master_run_up(next.command, next.run_up);
 }
