@@ -171,9 +171,8 @@ void BlockCompressor::flush(bool carry) {
       continue;
     }
     // Blocks, not elements: the pieces to an offsets' intersection belong to their block.
-    const auto blocks = std::count_if(elements_.begin() + static_cast<long>(begin), elements_.begin() + static_cast<long>(next_element),
-                                      [](const PathElement& e) { return !e.offset_extension; });
     std::vector<SpanBlock> span_blocks = blocks_of_span(span, begin, next_element);
+    const size_t blocks = span_blocks.size();
     PathElement out = std::move(elements_[begin]);
     out.span_blocks = std::move(span_blocks);
     merge_extra_axes(out, begin + 1, next_element);
@@ -181,7 +180,7 @@ void BlockCompressor::flush(bool carry) {
     out.curve = span.curve;
     out.label = compressor_label(run_mode_);
     out.inserted = out.offset_extension = false;  // a span of programmed blocks
-    out.compressed_blocks = static_cast<uint32_t>(std::max<long>(1, blocks));
+    out.compressed_blocks = static_cast<uint32_t>(std::max<size_t>(1, blocks));
     out.compress_deviation_mm = span.deviation_mm;
     next_.consume(std::move(out));
   }

@@ -15,7 +15,7 @@ namespace {
 // (SYNR, SYNW, SYNRW), initialisation time (INIPO, INIRE, INICF), unit, limits and access rights
 // (PHU, LLI, ULI, APR..., with a value), before or after the type:
 // DEF NCK SYNR INIPO REAL PHU 1 LLI 0 ULI 1000 SPEEDLIM. Only the limits LLI/ULI change what
-// drycut does: a write outside them is warned (ProgramLoader::check_limits).
+// drycut does: a write outside them is warned (ProgramLoader::within_limits).
 bool is_definition_attribute(std::string_view w) {
   return w == "PHU" || w == "LLI" || w == "ULI" || w == "PRLOC" || w == "APR" || w == "APW" ||
          w == "APRP" || w == "APWP" || w == "APRB" || w == "APWB" || w == "SYNR" || w == "SYNW" ||

@@ -38,10 +38,7 @@ size_t defined_name_start(std::string_view line) {
 // _N_NAME_DEF (`_N_UGUD_DEF`, `_N_SMAC_DEF`) as an archive or a copy of the NC's data holds it.
 bool is_definition_file_name(const std::string& file_name) {
   const std::string name = upper_ascii(file_name);
-  const auto ends_with = [&](std::string_view tail) {
-    return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
-  };
-  return ends_with(".DEF") || (name.rfind("_N_", 0) == 0 && ends_with("_DEF") && name.size() > 7);
+  return name.ends_with(".DEF") || (name.starts_with("_N_") && name.ends_with("_DEF") && name.size() > 7);
 }
 
 }  // namespace
