@@ -112,12 +112,22 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
   const std::string& axis = indices[0].text;
   if (axis.empty()) return std::nullopt;
   if (const int i = interpreter_.extra_axes().index(axis); i >= 0)
-    return interpreter_.extra_axes().position(static_cast<size_t>(i));
+    return actual ? interpreter_.extra_axis_actual_position(static_cast<size_t>(i))
+                  : interpreter_.extra_axes().position(static_cast<size_t>(i));
   for (int k = 0; k < 3; ++k)
     if (axis[0] == profile_.axes[static_cast<size_t>(k)].name[0])
       return workpiece ? interpreter_.workpiece_position(actual)[k]
                        : actual ? interpreter_.actual_position()[k] : interpreter_.position()[k];
   return std::nullopt;
+}
+
+bool InterpreterStateView::changes_while_polled(std::string_view n, std::span<const parser::Value> indices) const {
+  // The actual position of an axis on its way from POSA (Job Planning: $AA_IM, $AA_IW read the
+  // actual value; reading them in the part program waits for the main run).
+  const bool actual_position = n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB" || n == "$AA_IW" ||
+                               n == "$VA_IW" || n == "$AA_IEN";
+  if (!actual_position || indices.size() != 1 || indices[0].text.empty()) return false;
+  return interpreter_.extra_axes().moving_at(indices[0].text, interpreter_.nominal_time_s()) != nullptr;
 }
 
 std::optional<double> InterpreterStateView::tool_datum(int parameter, std::span<const Value> indices) const {

@@ -24,6 +24,7 @@ class InterpreterStateView : public parser::ControllerStateView {
   double elapsed_s() const override { return interpreter_.nominal_time_s(); }
   double poll_clock(uint64_t line) const override { return interpreter_.poll_clock(line); }
   double cutting_time_s() const override { return interpreter_.cutting_time_s(); }
+  bool changes_while_polled(std::string_view upper_name, std::span<const parser::Value> indices) const override;
   std::optional<double> frame_component(std::string_view frame_text, std::string_view axis,
                                         std::string_view component) const override;
   std::optional<std::string> frame_with_component(std::string_view frame_text, std::string_view axis,

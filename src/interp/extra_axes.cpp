@@ -115,16 +115,28 @@ std::string ExtraAxes::set_feed_group(const std::vector<std::string>& names) {
   return {};
 }
 
-void ExtraAxes::mark_running(const std::string& axis) {
-  if (!running(axis)) running_.push_back(axis);
+void ExtraAxes::mark_running(AsyncMove move) {
+  clear_running(move.axis);
+  running_.push_back(std::move(move));
 }
 
 bool ExtraAxes::running(const std::string& axis) const {
-  return std::find(running_.begin(), running_.end(), axis) != running_.end();
+  return std::any_of(running_.begin(), running_.end(), [&](const AsyncMove& m) { return m.axis == axis; });
 }
 
-void ExtraAxes::clear_running(const std::string& axis) {
-  running_.erase(std::remove(running_.begin(), running_.end(), axis), running_.end());
+double ExtraAxes::clear_running(const std::string& axis) {
+  double arrival = 0.0;
+  for (const AsyncMove& m : running_)
+    if (m.axis == axis) arrival = std::max(arrival, m.arrival_s);
+  std::erase_if(running_, [&](const AsyncMove& m) { return m.axis == axis; });
+  return arrival;
 }
+
+const ExtraAxes::AsyncMove* ExtraAxes::moving_at(const std::string& axis, double now) const {
+  for (const AsyncMove& m : running_)
+    if (m.axis == axis && now < m.arrival_s) return &m;
+  return nullptr;
+}
+
 
 }  // namespace drycut::interp

@@ -67,11 +67,21 @@ class ExtraAxes {
   void set_positioning_feed(size_t i, double per_s) { positioning_feed_[i] = per_s; }
   double positioning_feed(size_t i) const { return positioning_feed_[i]; }
 
-  // POSA moves not yet waited for (WAITP, or a block that programs the axis again).
-  void mark_running(const std::string& axis);
+  // POSA moves not yet waited for (WAITP, or a block that programs the axis again): where the
+  // axis started, its signed travel and when it started and arrives on the interpreter's clock.
+  struct AsyncMove {
+    std::string axis;  // "A"; "S1" for spindle 1
+    double from = 0, travel = 0;
+    double start_s = 0, arrival_s = 0;
+    double velocity = 0, accel = 0;  // of its rest-to-rest profile (positioning_share)
+  };
+  void mark_running(AsyncMove move);
   bool running(const std::string& axis) const;
-  void clear_running(const std::string& axis);
+  // Ends the wait for `axis` (no longer running); returns when it arrives (0: it was not running).
+  double clear_running(const std::string& axis);
   void clear_all_running() { running_.clear(); }
+  // The move of `axis` while it runs at `now` (before its arrival), else none.
+  const AsyncMove* moving_at(const std::string& axis, double now) const;
 
  private:
   std::vector<machine::AxisData> axes_;
@@ -80,7 +90,7 @@ class ExtraAxes {
   std::vector<double> feed_weight_;
   uint8_t geometry_group_ = 7;
   std::vector<double> positioning_feed_;
-  std::vector<std::string> running_;
+  std::vector<AsyncMove> running_;
 };
 
 }  // namespace drycut::interp

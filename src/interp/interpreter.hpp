@@ -99,6 +99,8 @@ class Interpreter {
   double poll_clock(uint64_t line);
   // Channel axes beyond X, Y, Z ($AA_IM[A] reads their positions).
   const ExtraAxes& extra_axes() const { return extra_axes_; }
+  // Where extra axis i is now: on its way while a POSA runs (its actual position, $AA_IM).
+  double extra_axis_actual_position(size_t i) const;
   // The contour of the last DRYCUT_CONTOUR_BEGIN ... END ($DRYCUT_CONTOUR, contour_recording.hpp).
   const ContourRecorder& recorded_contour() const { return recorder_; }
 
@@ -167,6 +169,9 @@ class Interpreter {
   double move_extra_axis(const BlockContext& ctx, size_t i, double value, parser::ValueMode mode, uint32_t column);
   void attach_extra_axes(BlockContext& ctx, PathElement& element, std::vector<ExtraAxisMove> moves);
   void emit_axis_waits(BlockContext& ctx);
+  // A POSA/SPOSA move starts (the clock knows when it arrives); a block waits for `axis`.
+  void mark_running(const PositioningMove& m, double from, double travel);
+  void wait_for(BlockContext& ctx, const std::string& axis);
   void emit_positioning(BlockContext& ctx);
   void execute_motion(BlockContext& ctx);
   void emit_dynamics_change(BlockContext& ctx);  // transition, acceleration, limits changed

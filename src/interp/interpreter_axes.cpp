@@ -9,6 +9,7 @@
 #include "interp/geometry/line_curve.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
+#include "interp/rest_to_rest.hpp"
 
 namespace drycut::interp {
 
@@ -36,8 +37,7 @@ bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) 
     ctx.extra_words.emplace_back(static_cast<size_t>(i), &a);
     // An axis still on its way from POSA: the block waits for it first (implicit WAITP).
     if (extra_axes_.running(a.name)) {
-      ctx.waits.push_back(a.name);
-      extra_axes_.clear_running(a.name);
+      wait_for(ctx, a.name);
     }
     return true;
   }
@@ -92,8 +92,7 @@ bool Interpreter::apply_axis_command(BlockContext& ctx, const parser::CommandWor
         warn_once(ctx, "WAITP: axis " + axis + " is not in the machine profile", c.column);
         continue;
       }
-      ctx.waits.push_back(axis);
-      extra_axes_.clear_running(axis);
+      wait_for(ctx, axis);
     }
     return true;
   }
@@ -309,10 +308,8 @@ void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
     return;
   }
   const size_t i = static_cast<size_t>(k);
-  if (extra_axes_.running(w.axis)) {  // programmed again while its POSA runs: wait first
-    ctx.waits.push_back(w.axis);
-    extra_axes_.clear_running(w.axis);
-  }
+  if (extra_axes_.running(w.axis)) wait_for(ctx, w.axis);  // programmed again while its POSA runs
+  const double from = extra_axes_.position(i);
   const double travel = move_extra_axis(ctx, i, w.value, w.mode, w.column);
   const machine::AxisData& a = extra_axes_.data(i);
   PositioningMove m;
@@ -321,7 +318,7 @@ void Interpreter::add_positioning(BlockContext& ctx, const AxisWord& w) {
   m.velocity = std::min(extra_axes_.positioning_feed(i), a.max_velocity_mm_s);
   m.accel = a.max_accel_mm_s2;
   m.block_synchronous = w.kind == AxisWordKind::Pos;
-  if (!m.block_synchronous) extra_axes_.mark_running(w.axis);
+  if (!m.block_synchronous) mark_running(m, from, travel);
   ctx.positioning.push_back(std::move(m));
 }
 
@@ -331,10 +328,7 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   const int number = w.axis.empty() ? master_spindle_ : std::atoi(w.axis.c_str());
   const bool master = number == master_spindle_;
   const std::string name = "S" + std::to_string(number);
-  if (extra_axes_.running(name)) {
-    ctx.waits.push_back(name);
-    extra_axes_.clear_running(name);
-  }
+  if (extra_axes_.running(name)) wait_for(ctx, name);
   constexpr double kTurn = 360.0;
   // The spindle is a modulo axis in position control: DC/ACP/ACN take 0 <= v < 360, as on a
   // modulo rotary axis (16830; SPOS=400 without them is reduced like C=AC(400)).
@@ -387,7 +381,7 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
     other_spindles_[number].angle_deg = reached;
   }
   m.block_synchronous = w.kind == AxisWordKind::SPos;
-  if (!m.block_synchronous) extra_axes_.mark_running(name);
+  if (!m.block_synchronous) mark_running(m, angle, m.travel);
   ctx.positioning.push_back(std::move(m));
 }
 
@@ -432,8 +426,27 @@ void Interpreter::attach_extra_axes(BlockContext& ctx, PathElement& e, std::vect
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), e.curve->end() - e.curve->start());
 }
 
+void Interpreter::mark_running(const PositioningMove& m, double from, double travel) {
+  // A POSA/SPOSA starts with its block: the clock knows when it arrives (WAITP waits for that,
+  // $AA_IM reads where it is meanwhile).
+  const double start = nominal_time_s();
+  const double duration = m.lead_time_s + rest_to_rest_s(m.travel, m.velocity, m.accel, m.jerk);
+  extra_axes_.mark_running({m.axis, from, travel, start + m.lead_time_s, start + duration, m.velocity, m.accel});
+}
+
+void Interpreter::wait_for(BlockContext& ctx, const std::string& axis) {
+  ctx.waits.push_back(axis);
+  ctx.waits_until_s = std::max(ctx.waits_until_s, extra_axes_.clear_running(axis));
+}
+
 void Interpreter::emit_axis_waits(BlockContext& ctx) {
   if (ctx.waits.empty()) return;
+  // The interpreter's clock waits with the block (the planner times the wait itself).
+  if (ctx.waits_until_s > nominal_time_s()) {
+    nominal_time_s_ += ctx.waits_until_s - nominal_time_s();
+    ++work_additions_;
+  }
+  ctx.waits_until_s = 0;
   PathElement e = element_template(ctx, ElementKind::AxisWait);
   e.wait_axes = std::move(ctx.waits);
   e.label = "WAIT";

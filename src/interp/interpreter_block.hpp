@@ -174,6 +174,7 @@ struct Interpreter::BlockContext {
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block
   std::vector<std::string> waits;            // WAITP/WAITS and implicit waits, before the motion
+  double waits_until_s = 0;                  // when the last of them arrives (interpreter clock)
   // RND=/CHF=/CHR= of this block (RND wins over a chamfer in the same block), FRC= as programmed.
   ContourCornerKind corner = ContourCornerKind::None;
   double corner_size_mm = 0.0;

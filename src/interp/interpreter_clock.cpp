@@ -9,30 +9,9 @@
 
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
+#include "interp/rest_to_rest.hpp"
 
 namespace drycut::interp {
-
-namespace {
-
-// Rest-to-rest time over a distance d at velocity v, acceleration a and jerk j (j <= 0: none):
-// each ramp from 0 to a speed u takes u/a + a/j (with a constant-acceleration phase, u·j >= a²)
-// or 2·sqrt(u/j) (jerk only) at an average speed u/2, so up and down cover u·ramp(u).
-// Long enough: d/v + ramp(v). Else the peak u solves d = u·ramp(u): u = cbrt(d²·j/4) jerk only,
-// or u²/a + u·a/j = d with the acceleration phase; the time is 2·ramp(u).
-double rest_to_rest_s(double d, double v, double a, double j) {
-  if (d <= 0 || v <= 0 || a <= 0) return 0.0;
-  const bool jerk = j > 0 && std::isfinite(j);
-  const auto ramp = [&](double u) { return !jerk ? u / a : u * j >= a * a ? u / a + a / j : 2.0 * std::sqrt(u / j); };
-  if (d >= v * ramp(v)) return d / v + ramp(v);
-  double u = jerk ? std::cbrt(d * d * j / 4.0) : std::sqrt(d * a);
-  if (jerk && u * j >= a * a) {
-    const double b = a / j;
-    u = 0.5 * a * (std::sqrt(b * b + 4.0 * d / a) - b);
-  }
-  return 2.0 * ramp(u);
-}
-
-}  // namespace
 
 double Interpreter::poll_clock(uint64_t line) {
   if (line != line_at_poll_) {
@@ -44,6 +23,15 @@ double Interpreter::poll_clock(uint64_t line) {
     line_at_poll_ = line;
   }
   return nominal_time_s();
+}
+
+double Interpreter::extra_axis_actual_position(size_t i) const {
+  const double now = nominal_time_s();
+  const ExtraAxes::AsyncMove* m = extra_axes_.moving_at(extra_axes_.data(i).name, now);
+  if (!m) return extra_axes_.position(i);
+  const double share = positioning_share(std::abs(m->travel), m->velocity, m->accel, m->arrival_s - m->start_s, now - m->start_s);
+  const double at = m->from + share * m->travel;
+  return extra_axes_.data(i).modulo ? wrap_modulo(at, extra_axes_.data(i).modulo_range) : at;
 }
 
 void Interpreter::emit_clock_wait(const BlockContext& ctx) {

@@ -77,7 +77,8 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     ++view_reads_;
     return {Value(view_ ? view_->cutting_time_s() : 0.0), false};
   }
-  if (name == "$AA_S" && view_) return read_actual_spindle_speed(name, indices, key);
+  if (view_ && (name == "$AA_S" || view_->changes_while_polled(name, indices)))
+    return read_process_value(name, indices, key);
   if (run_clock_reading(name, 0.0)) {
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? poll_clock() : 0.0)), false};
@@ -101,11 +102,12 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   return {Value(0.0), true};
 }
 
-SystemVariables::ReadResult SystemVariables::read_actual_spindle_speed(std::string_view name,
-                                                                      std::span<const Value> indices,
-                                                                      const std::string& key) const {
-  // The actual speed follows its run-up ramp in time: a poll of it lets the clock run, as a poll
-  // of the clock does (a warm-up loop waits for the speed). Once it reads what it read at the
+SystemVariables::ReadResult SystemVariables::read_process_value(std::string_view name,
+                                                               std::span<const Value> indices,
+                                                               const std::string& key) const {
+  // The actual speed follows its run-up ramp in time, an axis from POSA its way: a poll of them
+  // lets the clock run, as a poll of the clock does (a warm-up loop waits for the speed, a
+  // macro for the axis). Once it reads what it read at the
   // last poll the ramp is over and the speed stays until a block changes it: that read neither
   // reads changing state nor lets time count for the loop guard, so a loop waiting for a speed
   // the spindle never reaches (above MD35100, G26 or LIMS) is the endless loop it is on the

@@ -51,6 +51,11 @@ class ControllerStateView {
   // program line `line` (a running count of lines executed): such a read waits for the main
   // run, so a program that polls the clock lets time pass (Interpreter::poll_clock).
   virtual double poll_clock(uint64_t /*line*/) const { return elapsed_s(); }
+  // Whether the actual value read changes with time as it is polled (an axis on its way from
+  // POSA read by $AA_IM): such a read lets the clock run, as a read of $AA_S does.
+  virtual bool changes_while_polled(std::string_view /*upper_name*/, std::span<const Value> /*indices*/) const {
+    return false;
+  }
   // Seconds of motion at feed with a tool active so far ($AC_CUTTING_TIME, tool action time).
   virtual double cutting_time_s() const { return 0.0; }
   // A component [axis, TR|FI|RT|SC|MI] of a FRAME value (its text, "CTRANS(X,10)"; empty: the
@@ -134,7 +139,7 @@ class SystemVariables {
   mutable uint64_t process_reads_ = 0;
   mutable MachineDataMap last_process_values_;  // $AA_S[n] at its last poll
   mutable std::string settled_read_;             // the last such poll that read the same again
-  ReadResult read_actual_spindle_speed(std::string_view name, std::span<const Value> indices,
+  ReadResult read_process_value(std::string_view name, std::span<const Value> indices,
                                        const std::string& key) const;
   double poll_clock() const {
     ++clock_reads_;
