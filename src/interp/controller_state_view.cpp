@@ -124,9 +124,7 @@ std::optional<double> InterpreterStateView::axis_position(std::span<const Value>
 bool InterpreterStateView::changes_while_polled(std::string_view n, std::span<const parser::Value> indices) const {
   // The actual position of an axis on its way from POSA (Job Planning: $AA_IM, $AA_IW read the
   // actual value; reading them in the part program waits for the main run).
-  const bool actual_position = n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB" || n == "$AA_IW" ||
-                               n == "$VA_IW" || n == "$AA_IEN";
-  if (!actual_position || indices.size() != 1 || indices[0].text.empty()) return false;
+  if (!parser::is_actual_position_name(n) || indices.size() != 1 || indices[0].text.empty()) return false;
   return interpreter_.extra_axes().moving_at(indices[0].text, interpreter_.nominal_time_s()) != nullptr;
 }
 

@@ -561,14 +561,12 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
       system_variables_.forget_settled_read();  // only a read of the pass that repeats is named
       return false;
     case LoopGuard::Repeat::Endless: {
-      // A poll of the actual spindle speed that no longer changes: the speed the loop waits for
-      // is beyond what the spindle reaches (its limits), which the alarm names.
+      // A poll of an actual value (spindle speed, axis position) that no longer changes: the
+      // value the loop waits for is beyond what the machine reaches, which the alarm says.
       const std::string& settled = system_variables_.settled_read();
       raise(990004,
             "back at line " + std::to_string(f.reader.tell().line) + " with every variable unchanged" +
-                (settled.empty() ? std::string()
-                                 : " (" + settled + ": the spindle does not reach the speed the loop waits for; its "
-                                                    "limits are MD35100 max_spindle_speed_rpm, G26 and LIMS)"),
+                (settled.empty() ? std::string() : " (" + settled + ")"),
             0);
     }
     case LoopGuard::Repeat::WaitsOnInput:

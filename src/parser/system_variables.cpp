@@ -53,6 +53,9 @@ std::string system_variable_key(std::string_view upper_name, std::span<const Val
   return key;
 }
 
+// Why an actual position read the same again (the 990004 of a loop waiting for it).
+constexpr std::string_view kAxisStands = "the axis stands there; the loop waits for a position it does not reach";
+
 SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::span<const Value> indices) const {
   const std::string key = system_variable_key(name, indices);
   if (name.size() > 1 && (name[1] == 'A' || name[1] == 'V')) ++main_run_reads_;
@@ -92,7 +95,12 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   if (auto it = text_values_.find(key); it != text_values_.end()) return {Value::of_text(it->second), false};
   if (view_ && (c == SystemVariableClass::State || c == SystemVariableClass::ToolData)) {
     ++view_reads_;
-    if (auto v = view_->read_system_variable(name, indices)) return {*v, false};
+    if (auto v = view_->read_system_variable(name, indices)) {
+      // An axis standing where it stood at the last read tells the loop nothing new: a macro
+      // waiting for a position the axis never reaches is the endless loop it is (990004).
+      if (is_actual_position_name(name) && v->is_number()) note_process_value(key, *v, kAxisStands);
+      return {*v, false};
+    }
   }
   // A frame the program wrote and the interpreter does not keep reads back as written.
   if (auto it = frames_.find(key); it != frames_.end()) return {it->second, false};
@@ -117,15 +125,26 @@ SystemVariables::ReadResult SystemVariables::read_process_value(std::string_view
   ++view_reads_;
   const auto v = view_->read_system_variable(name, indices);
   if (!v) return {Value(0.0), true};
-  auto [last, first] = last_process_values_.try_emplace(key, v->number);
-  if (!first && last->second == v->number) {
+  const bool spindle = name == "$AA_S";
+  if (!note_process_value(key, *v,
+                          spindle ? "the spindle does not reach the speed the loop waits for; its limits are MD35100 "
+                                    "max_spindle_speed_rpm, G26 and LIMS"
+                                  : kAxisStands)) {
     --clock_reads_;
     --process_reads_;
-    --view_reads_;
-    settled_read_ = key + " stays at " + as_text(*v);
   }
-  last->second = v->number;
   return {*v, false};
+}
+
+bool SystemVariables::note_process_value(const std::string& key, const Value& v, std::string_view why) const {
+  auto [last, first] = last_process_values_.try_emplace(key, v.number);
+  const bool changed = first || last->second != v.number;
+  if (!changed) {
+    --view_reads_;
+    settled_read_ = key + " stays at " + as_text(v) + ": " + std::string(why);
+  }
+  last->second = v.number;
+  return changed;
 }
 
 void SystemVariables::write(std::string_view name, std::span<const Value> indices, const Value& v) {

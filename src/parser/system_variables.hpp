@@ -37,6 +37,12 @@ inline bool is_frame_variable_name(std::string_view upper_name) {
   return upper_name.rfind("$P_", 0) == 0 && (upper_name.ends_with("FRAME") || upper_name.ends_with("FR"));
 }
 
+// The actual position of an axis: machine, basic and workpiece system, path or interpolator
+// value ($AA_IM, $VA_IM, $AA_IB, $AA_IW, $VA_IW, $AA_IEN; Job Planning, "System variables").
+inline bool is_actual_position_name(std::string_view n) {
+  return n == "$AA_IM" || n == "$VA_IM" || n == "$AA_IB" || n == "$AA_IW" || n == "$VA_IW" || n == "$AA_IEN";
+}
+
 // "$MA_X" + [X1] -> "$MA_X[X1]": the key of machine data maps and written values.
 std::string system_variable_key(std::string_view upper_name, std::span<const Value> indices);
 
@@ -139,6 +145,9 @@ class SystemVariables {
   mutable uint64_t process_reads_ = 0;
   mutable MachineDataMap last_process_values_;  // $AA_S[n] at its last poll
   mutable std::string settled_read_;             // the last such poll that read the same again
+  // Keeps the value of a polled process value (key); false when it reads what it read last time
+  // (the read is then no read for the loop guard, and settled_read() names it with `why`).
+  bool note_process_value(const std::string& key, const Value& v, std::string_view why) const;
   ReadResult read_process_value(std::string_view name, std::span<const Value> indices,
                                        const std::string& key) const;
   double poll_clock() const {
