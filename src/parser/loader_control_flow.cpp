@@ -423,25 +423,41 @@ void ProgramLoader::execute_case() {
   }
 }
 
+namespace {
+// "N50" as a section marker (REPEAT N50 P=2): block number 50. A label cannot be N and digits
+// (its first two characters are letters or underscores), so the two never mix.
+std::optional<int64_t> marker_block_number(const std::string& marker) {
+  if (marker.size() < 2 || marker.size() > 19 || marker[0] != 'N') return std::nullopt;
+  if (!std::all_of(marker.begin() + 1, marker.end(), [](char c) { return c >= '0' && c <= '9'; })) return std::nullopt;
+  return std::stoll(marker.substr(1));
+}
+}  // namespace
+
 std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label) {
   Frame& f = *frames_.back();
+  if (marker_block_number(label)) {
+    // A block number may come more than once: the last one up to this line, else the next one.
+    if (auto before = find_label_between(label, f.start, f.reader.tell().offset, true)) return before;
+    return find_label_between(label, f.reader.tell(), UINT64_MAX);
+  }
   if (auto it = f.labels.find(label); it != f.labels.end()) return it->second;
   // Not passed yet: search the whole program.
   return find_label_between(label, f.start, UINT64_MAX);
 }
 
 std::optional<LinePosition> ProgramLoader::find_label_between(const std::string& label, LinePosition from,
-                                                               uint64_t before) {
+                                                               uint64_t before, bool last) {
   // A parser of its own (the current line's parse stays valid); reading goes on where it was.
   Frame& f = *frames_.back();
   const LinePosition resume = f.reader.tell();
+  const std::optional<int64_t> number = marker_block_number(label);
   std::optional<LinePosition> found;
   f.reader.seek(from);
   RawLine raw;
   std::string line;
   ParsedLine parsed;
   LineParser parser;
-  while (!found && f.reader.next(raw) && raw.position.offset < before) {
+  while ((last || !found) && f.reader.next(raw) && raw.position.offset < before) {
     if (raw.position.offset > from.offset && is_program_header(raw.bytes)) break;  // the next program
     if (raw.too_long) continue;
     decode_line_to_utf8(raw.bytes, line);
@@ -451,7 +467,7 @@ std::optional<LinePosition> ProgramLoader::find_label_between(const std::string&
     } catch (const LineError&) {
       continue;  // a broken line raises its alarm when it is executed, not here
     }
-    if (parsed.label == label) found = raw.position;
+    if (number ? parsed.number == number : parsed.label == label) found = raw.position;
   }
   f.reader.seek(resume);
   return found;

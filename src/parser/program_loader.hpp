@@ -192,8 +192,10 @@ class ProgramLoader {
   void jump_to_value(JumpDirection direction, const Value& target, uint32_t column);  // GOTO "L"<<R1, RET("L")
   void jump_to(JumpDirection direction, const std::string& label, std::optional<int64_t> number, uint32_t column);
   std::optional<LinePosition> find_label_position(const std::string& label);
-  // The first line labelled `label` from `from` on, before byte offset `before`.
-  std::optional<LinePosition> find_label_between(const std::string& label, LinePosition from, uint64_t before);
+  // The first (`last`: the last) line labelled `label` from `from` on, before byte offset
+  // `before`; a marker N<digits> is that block number.
+  std::optional<LinePosition> find_label_between(const std::string& label, LinePosition from, uint64_t before,
+                                                 bool last = false);
   Statement skip_forward(bool stop_at_else);
   void parse_during_search(Frame& f);
   void push_control(const ControlFrame& c);
