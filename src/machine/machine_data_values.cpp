@@ -57,6 +57,11 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
       md["$MA_POS_LIMIT_PLUS[" + axis + "]"] = a.max_mm;                        // MD36110
       md["$MA_POS_LIMIT_MINUS[" + axis + "]"] = a.min_mm;                       // MD36100
       md["$MA_COMPRESS_POS_TOL[" + axis + "]"] = a.compress_pos_tol_mm;         // MD33100
+      // MD30600 FIX_POINT_POS[k] (G75 FP=k+1) and MD34100 REFP_SET_POS[0]: the profile's
+      // fix_points_mm and reference_point_mm (where the profile gives none: the 990007 warning).
+      for (size_t k = 0; k < a.fix_points_mm.size(); ++k)
+        md["$MA_FIX_POINT_POS[" + std::to_string(k) + "," + axis + "]"] = a.fix_points_mm[k];
+      if (a.reference_point_mm) md["$MA_REFP_SET_POS[0," + axis + "]"] = *a.reference_point_mm;
     }
   }
   // MD20050 / MD20070: geometry axis g is channel axis g + 1, channel axis c is machine axis c.

@@ -246,7 +246,8 @@ class ProgramLoader::BlockBuilder {
       indexed_address(item);
       return;
     }
-    if (is_address(item.name) || is_extended_address(item.name)) {
+    // An axis of the machine's own name (MD10000/MD20080: MZ=180, MAG=2) from the profile.
+    if (is_address(item.name) || is_extended_address(item.name) || l_.is_axis_name(item.name)) {
       address_value(std::string(item.name), item);
       return;
     }

@@ -10,6 +10,8 @@ void add_machine(LoaderOptions& o, const machine::MachineProfile& profile) {
   for (const auto& [name, value] : machine::machine_data_values(profile)) o.machine_data[name] = value;
   for (const auto& [name, text] : machine::machine_data_texts(profile)) o.machine_data_texts[name] = text;
   for (const auto& axis : profile.axes) o.axis_names.push_back(axis.name);
+  // The channel's further axes by the names the profile gives them (MD20080: MZ, MAG, ZR).
+  for (const auto& axis : profile.extra_axes) o.axis_names.push_back(axis.name);
   // MD20150 GCODE_RESET_VALUES[group - 1]: the internal number, in its G group, of each code of
   // the profile's reset list (G1 is 2 in group 1). Groups drycut does not number stay unknown.
   for (const std::string& code : profile.reset_gcodes) {
