@@ -193,9 +193,10 @@ void ProgramLoader::next_for_pass(Frame& f, uint32_t column) {
     const double index = std::stod(top.variable.substr(1));
     value = r_parameters_[static_cast<size_t>(index)] += 1.0;
   }
-  if (value <= top.end)
-    f.reader.seek(top.body);  // the variable changed: never the same state
-  else
+  if (value <= top.end) {
+    f.reader.seek(top.body);  // the variable changed: never the same state,
+    check_endless_loop();     // but a FOR may count the timeout of a wait for an input
+  } else
     f.control.pop_back();
 }
 
@@ -571,11 +572,19 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
   next_loop_check_ = steps_ + loop_state_.size() / kStateBytesPerLine;
   const LoopGuard::Visit visit{system_variables_.view_reads(), system_variables_.input_reads(), work_blocks_,
                                dwell_blocks_, system_variables_.clock_reads(), system_variables_.process_reads(),
-                               !awaited.empty()};
+                               !awaited.empty(), system_variables_.elapsed_s()};
   switch (loop_guard_.repeats(site, loop_state_, visit)) {
     case LoopGuard::Repeat::No:
       system_variables_.forget_settled_read();  // only a read of the pass that repeats is named
       return false;
+    case LoopGuard::Repeat::PollsInputWithTimeout: {
+      // A wait with a counter for its timeout: the input comes (a digital input toggles), and
+      // the loop leaves by its own jump on the next pass. Other signals keep their value.
+      const std::string what = system_variables_.last_input_read();
+      if (system_variables_.input_arrived(what))
+        warn(990014, "loop waits for " + what + " (its pass counts a timeout; the input is taken as come)", 0);
+      return false;
+    }
     case LoopGuard::Repeat::Endless: {
       // A poll of an actual value (spindle speed, axis position) that no longer changes: the
       // value the loop waits for is beyond what the machine reaches, which the alarm says.

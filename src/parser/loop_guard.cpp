@@ -22,18 +22,21 @@ LoopGuard::Repeat LoopGuard::repeats(uint64_t site, const std::string& state, co
       r.last_input_reads != v.input_reads)
     return Repeat::WaitsOnInput;
   if (r.visits > 0 && r.reads == v.reads && r.state == state) return Repeat::Endless;
+  const bool polled_input = !v.decided_by_input && r.visits > 0 && r.last_work_blocks == v.work_blocks && waited &&
+                            r.last_input_reads != v.input_reads && v.clock_s - r.last_clock_s <= kMaxPollPassS;
   r.last_work_blocks = v.work_blocks;
   r.last_dwell_blocks = v.dwell_blocks;
   r.last_clock_reads = v.clock_reads;
   r.last_input_reads = v.input_reads;
   r.last_process_reads = v.process_reads;
+  r.last_clock_s = v.clock_s;
   if (++r.visits == r.next_save) {
     r.state = state;
     r.reads = v.reads;
     r.input_reads = v.input_reads;
     r.next_save *= 2;
   }
-  return Repeat::No;
+  return polled_input ? Repeat::PollsInputWithTimeout : Repeat::No;
 }
 
 }  // namespace drycut::parser

@@ -33,6 +33,15 @@
 // check after it stopped the run). A pass that polled a process value (the spindle's actual
 // speed: WHILE ($AA_S<7900) AND ($A_IN[3]==0)) waits for that process: it runs on until the
 // value ends it, the input being the abort.
+//
+// A wait whose own jump back is decided by a counter, not by the input (TUER: IF $A_IN[1]==1
+// GOTOF OFFEN / G4 F0.5 / _TRY=_TRY+1 / IF _TRY<20 GOTOB TUER / SETAL(65201)), changes state on
+// every pass and leaves by a jump forward when the input comes: when the pass since the last
+// visit read an input, did no work and only dwelled or polled a timer, for at most
+// kMaxPollPassS seconds, it is such a wait (Repeat::PollsInputWithTimeout): the loader lets the
+// input come and the loop leaves on its next pass instead of running into its timeout alarm
+// (before 2026-11-29). A pass that dwells longer (a warm-up's G4 F60 beside an abort input) is
+// no poll: its passes run.
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -41,7 +50,10 @@ namespace drycut::parser {
 
 class LoopGuard {
  public:
-  enum class Repeat : uint8_t { No, Endless, WaitsOnInput };
+  enum class Repeat : uint8_t { No, Endless, WaitsOnInput, PollsInputWithTimeout };
+  // The longest pass of a poll (G4 between two reads of the input) [I]: door, clamp and pallet
+  // waits poll every 0.1..1 s; a warm-up dwells for tens of seconds per step.
+  static constexpr double kMaxPollPassS = 2.0;
   struct Visit {
     uint64_t reads = 0;          // running count of reads of the interpreter's state
     uint64_t input_reads = 0;    // running count of input and PLC reads
@@ -50,6 +62,7 @@ class LoopGuard {
     uint64_t clock_reads = 0;    // running count of reads that let the clock run ($AC_TIMER, $AA_S)
     uint64_t process_reads = 0;  // of those, reads of a process value ($AA_S), not of a timer
     bool decided_by_input = false;
+    double clock_s = 0;          // the interpreter's clock
   };
   // WaitsOnInput when `state` at `site` equals the saved one and inputs were read since, or
   // when the jump was decided by an input and the pass since the last visit only dwelled; else Endless
@@ -68,6 +81,7 @@ class LoopGuard {
     uint64_t last_clock_reads = 0;
     uint64_t last_input_reads = 0;
     uint64_t last_process_reads = 0;
+    double last_clock_s = 0;
   };
   std::unordered_map<uint64_t, Record> sites_;
 };

@@ -225,10 +225,11 @@ bool SystemVariables::profile_gives(std::string_view name) const {
          (text_hit != text_values_.end() && text_hit->first.starts_with(indexed));
 }
 
-void SystemVariables::input_arrived(const std::string& key) {
-  if (key.rfind("$A_IN[", 0) != 0) return;
+bool SystemVariables::input_arrived(const std::string& key) {
+  if (key.rfind("$A_IN[", 0) != 0) return false;
   double& v = values_[key];
   v = v == 0.0 ? 1.0 : 0.0;
+  return true;
 }
 
 }  // namespace drycut::parser

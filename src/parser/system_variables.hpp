@@ -101,6 +101,8 @@ class SystemVariables {
   void append_state(std::string& out) const;
   // How many values were read from the interpreter so far.
   uint64_t view_reads() const { return view_reads_; }
+  // The interpreter's clock (0 without an interpreter).
+  double elapsed_s() const { return view_ ? view_->elapsed_s() : 0.0; }
   // How many inputs and PLC data ($A_IN, $A_DBB ..., not written by the program) were read so
   // far, and the last one read ("$A_IN[3]"): a loop that repeats while reading them waits.
   uint64_t input_reads() const { return input_reads_; }
@@ -121,7 +123,9 @@ class SystemVariables {
   void forget_settled_read() { settled_read_.clear(); }
   // A wait on `key` ended (the loop guard took the signal as come): a digital input ($A_IN[n])
   // reads its other value from now on. Other data (bytes, words) have no one awaited value.
-  void input_arrived(const std::string& key);
+  // The awaited signal came: a digital input ($A_IN[n]) takes the other value; false for any
+  // other signal (its awaited value is not known).
+  bool input_arrived(const std::string& key);
   // A value something outside the program may change was read (the operator at M0/M1, a
   // synchronized action): a loop that repeats after such a read waits, as on an input.
   void note_external_read(const std::string& what) const {
