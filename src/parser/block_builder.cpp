@@ -447,6 +447,14 @@ class ProgramLoader::BlockBuilder {
       l_.warn(static_cast<int>(n), text, item.column);
       return;
     }
+    // The program checks the machine (IF $A_IN[5]==0 SETAL(65000,"AIR PRESSURE")): with a signal
+    // the dry run does not know, the alarm is the dry run's guess, not the machine's state.
+    if (const std::string input = l_.alarm_decided_by_unknown_input(); !input.empty()) {
+      l_.warn(990021, "SETAL(" + number_to_text(n) + ", \"" + text + "\") follows from " + input +
+                          ", which the profile does not give (give it in machine_data to model the signal)",
+              item.column);
+      return;
+    }
     throw LineError(static_cast<int>(n), item.column, text);
   }
 

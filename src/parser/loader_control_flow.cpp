@@ -98,7 +98,7 @@ void ProgramLoader::execute_control() {
       if (eval(parsed_.condition) != 0.0) {
         c.awaited_input = condition_input();
         push_control(c);
-      } else if (skip_forward(true) == Statement::Else) {
+      } else if (c.awaited_input = condition_input(); skip_forward(true) == Statement::Else) {
         c.kind = Statement::If;
         c.in_else = true;
         push_control(c);
@@ -378,15 +378,34 @@ void ProgramLoader::jump_to(JumpDirection direction, const std::string& label, s
 void ProgramLoader::execute_if_goto() {
   // IF c1 GOTOF l1 [IF c2 GOTOF l2 ...]: the first condition that holds jumps; none: the next block.
   if (eval(parsed_.condition) != 0.0) {
+    note_input_jump();
     jump(parsed_.jump, parsed_.target);
     return;
   }
   const std::vector<CaseBranch> more = parsed_.cases;  // the jump reuses parsed_
   for (const CaseBranch& b : more)
     if (eval(b.value) != 0.0) {
+      note_input_jump();
       jump(b.jump, b.target);
       return;
     }
+}
+
+void ProgramLoader::note_input_jump() {
+  if (std::string input = condition_input(); !input.empty()) input_jump_ = {std::move(input), steps_};
+}
+
+std::string ProgramLoader::alarm_decided_by_unknown_input() const {
+  // The IF (or ELSE) blocks the alarm stands in, innermost first, then a jump decided by an
+  // input that arrived here within the last few lines (IF $A_IN[5]==0 GOTOF ERR / ERR: SETAL).
+  constexpr uint64_t kLinesAfterJump = 3;
+  for (auto it = frames_.back()->control.rbegin(); it != frames_.back()->control.rend(); ++it)
+    if (it->kind == Statement::If && !it->awaited_input.empty() && !system_variables_.signal_given(it->awaited_input))
+      return it->awaited_input;
+  if (!input_jump_.first.empty() && steps_ - input_jump_.second <= kLinesAfterJump &&
+      !system_variables_.signal_given(input_jump_.first))
+    return input_jump_.first;
+  return {};
 }
 
 void ProgramLoader::execute_case() {

@@ -186,6 +186,10 @@ class ProgramLoader {
   // For a jump back to `target_line`: this line's condition, or for a GOTOB of its own the IF
   // block that directly wraps it and starts after the target (W1: / IF $A_IN[4]==0 / GOTOB W1).
   std::string jump_awaited_input(uint32_t target_line) const;
+  // An IF-GOTO decided by an input remembers it (input_jump_); a SETAL in a branch an input the
+  // profile does not give decided names that input (the alarm is then only warned, 990021).
+  void note_input_jump();
+  std::string alarm_decided_by_unknown_input() const;
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to_start();
@@ -251,6 +255,7 @@ class ProgramLoader {
   uint64_t blocks_executed_ = 0;
   uint64_t main_run_reads_seen_ = 0;  // system_variables_.main_run_reads() at the last block
   uint64_t steps_ = 0;
+  std::pair<std::string, uint64_t> input_jump_;  // the input that decided the last jump, steps_ then
   const ControllerStateView* state_view_ = nullptr;  // frames of FRAME variables (components)
   uint64_t work_blocks_ = 0;   // blocks handed on that move axes or program M functions or S
   uint64_t dwell_blocks_ = 0;  // G4 blocks handed on (a wait loop dwells between its polls)

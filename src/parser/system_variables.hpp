@@ -18,6 +18,7 @@
 // (Block::system_writes), which applies what it models (tool data, frames).
 #include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -83,7 +84,11 @@ using MachineDataTexts = std::map<std::string, std::string, std::less<>>;
 class SystemVariables {
  public:
   explicit SystemVariables(MachineDataMap machine_data, MachineDataTexts machine_texts = {})
-      : values_(std::move(machine_data)), text_values_(std::move(machine_texts)) {}
+      : values_(std::move(machine_data)), text_values_(std::move(machine_texts)) {
+    for (const auto& [key, value] : values_)
+      if (classify_system_variable(std::string_view(key).substr(0, key.find('['))) == SystemVariableClass::InputOutput)
+        given_signals_.insert(key);
+  }
   void set_view(const ControllerStateView* view) { view_ = view; }
   // The loader executes its next line (the clock's reads on one line see one time).
   void begin_line() { ++line_; }
@@ -126,6 +131,8 @@ class SystemVariables {
   // The awaited signal came: a digital input ($A_IN[n]) takes the other value; false for any
   // other signal (its awaited value is not known).
   bool input_arrived(const std::string& key);
+  // Whether the profile gives the input or PLC datum `key` a value (its machine_data).
+  bool signal_given(const std::string& key) const { return given_signals_.count(key) > 0; }
   // A value something outside the program may change was read (the operator at M0/M1, a
   // synchronized action): a loop that repeats after such a read waits, as on an input.
   void note_external_read(const std::string& what) const {
@@ -147,6 +154,7 @@ class SystemVariables {
   mutable uint64_t main_run_reads_ = 0;
   mutable uint64_t clock_reads_ = 0;
   mutable uint64_t process_reads_ = 0;
+  std::set<std::string, std::less<>> given_signals_;  // inputs and PLC data the profile gives
   mutable MachineDataMap last_process_values_;  // $AA_S[n] at its last poll
   mutable std::string settled_read_;             // the last such poll that read the same again
   // Keeps the value of a polled process value (key); false when it reads what it read last time
