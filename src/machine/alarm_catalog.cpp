@@ -79,7 +79,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990018, S::Warning, "Name is a keyword of the control and a program in the search path: drycut calls the program", A::Drycut},
     AlarmInfo{990019, S::Warning, "G group 15 (feed type, spindle speed mode) changed what F or S mean", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
-    AlarmInfo{990021, S::Warning, "Cycle alarm not raised: its condition read an input or PLC signal a dry run does not know", A::Drycut},
+    AlarmInfo{990021, S::Warning, "Cycle alarm not raised: it follows from an input, PLC signal or measured value a dry run does not know", A::Drycut},
 };
 
 }  // namespace

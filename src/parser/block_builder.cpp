@@ -450,8 +450,10 @@ class ProgramLoader::BlockBuilder {
     // The program checks the machine (IF $A_IN[5]==0 SETAL(65000,"AIR PRESSURE")): with a signal
     // the dry run does not know, the alarm is the dry run's guess, not the machine's state.
     if (const std::string input = l_.alarm_decided_by_unknown_input(); !input.empty()) {
+      const bool measured = input.starts_with("$AA_M");
       l_.warn(990021, "SETAL(" + number_to_text(n) + ", \"" + text + "\") follows from " + input +
-                          ", which the profile does not give (give it in machine_data to model the signal)",
+                          (measured ? ", a measured value (a dry run touches nothing)"
+                                    : ", which the profile does not give (give it in machine_data to model the signal)"),
               item.column);
       return;
     }

@@ -397,7 +397,8 @@ void ProgramLoader::note_input_jump() {
 
 std::string ProgramLoader::alarm_decided_by_unknown_input() const {
   // The IF (or ELSE) blocks the alarm stands in, innermost first, then a jump decided by an
-  // input that arrived here within the last few lines (IF $A_IN[5]==0 GOTOF ERR / ERR: SETAL).
+  // input that arrived here within the last few lines (IF $A_IN[5]==0 GOTOF ERR / ERR: SETAL),
+  // then a measured value read before.
   constexpr uint64_t kLinesAfterJump = 3;
   for (auto it = frames_.back()->control.rbegin(); it != frames_.back()->control.rend(); ++it)
     if (it->kind == Statement::If && !it->awaited_input.empty() && !system_variables_.signal_given(it->awaited_input))
@@ -405,7 +406,9 @@ std::string ProgramLoader::alarm_decided_by_unknown_input() const {
   if (!input_jump_.first.empty() && steps_ - input_jump_.second <= kLinesAfterJump &&
       !system_variables_.signal_given(input_jump_.first))
     return input_jump_.first;
-  return {};
+  // After a measurement every check may hang on the measured value (through the variables the
+  // macro computes from it: _D=_XP-_XM, IF _D>20.5 SETAL): a dry run measured nothing.
+  return system_variables_.measurement_read();
 }
 
 void ProgramLoader::execute_case() {

@@ -133,6 +133,8 @@ class SystemVariables {
   bool input_arrived(const std::string& key);
   // Whether the profile gives the input or PLC datum `key` a value (its machine_data).
   bool signal_given(const std::string& key) const { return given_signals_.count(key) > 0; }
+  // The last measured value read ($AA_MW[X]); empty when the program has read none.
+  const std::string& measurement_read() const { return measurement_read_; }
   // A value something outside the program may change was read (the operator at M0/M1, a
   // synchronized action): a loop that repeats after such a read waits, as on an input.
   void note_external_read(const std::string& what) const {
@@ -155,6 +157,7 @@ class SystemVariables {
   mutable uint64_t clock_reads_ = 0;
   mutable uint64_t process_reads_ = 0;
   std::set<std::string, std::less<>> given_signals_;  // inputs and PLC data the profile gives
+  mutable std::string measurement_read_;
   mutable MachineDataMap last_process_values_;  // $AA_S[n] at its last poll
   mutable std::string settled_read_;             // the last such poll that read the same again
   // Keeps the value of a polled process value (key); false when it reads what it read last time
