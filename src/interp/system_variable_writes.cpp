@@ -91,6 +91,13 @@ bool Interpreter::write_frame_variable(const parser::Block& block, const parser:
     const int axis = detail::axis_index(w.indices[first].text);
     const std::string& component = w.indices[first + 1].text;
     const bool length = component == "TR" || component == "FI";
+    // A frame copied whole ($P_UIFR[2]=$P_UIFR[1] reads as a matrix) is split into translation,
+    // rotation and scale where it is one, so that a component can be set (as _FR[X,TR]= does).
+    if (components.composed()) {
+      const std::optional<FrameComponents> split = FrameComponents::of_product(components.frame());
+      if (!split) return false;
+      components = *split;
+    }
     if (axis < 0 || !components.set(axis, component, w.value.number * (length ? geometry_unit() : 1.0))) return false;
   } else {
     if (w.value.kind != parser::ValueKind::Frame) return false;
