@@ -1,5 +1,6 @@
 // The curves of motion blocks: lines, circles (all G2/G3/CIP/CT forms, built in the workpiece
 // system and mapped through the frame) and spline runs.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -47,9 +48,45 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   if (!extra.empty()) attach_extra_axes(ctx, e, std::move(extra));  // (most blocks move no extra axis)
   mark_for_compressor(ctx, e);
   request_corner(ctx, e);
+  if (!arc && emit_constant_cutting_speed_pieces(ctx, e)) return;
   position_ = e.curve->end();
   if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
   emit(std::move(e));
+}
+
+bool Interpreter::emit_constant_cutting_speed_pieces(BlockContext& ctx, const PathElement& e) {
+  // G96 with G95 on a facing or taper cut: the feed f·n follows the diameter along the block (n
+  // from 200 to 900 rev/min on a face). One mean feed gives the block its true time but a flat
+  // velocity; pieces whose speeds differ by at most kStep each (equal lengths, each at the
+  // harmonic mean of its own diameters: constant_cutting_speed.hpp) give the feed its course as
+  // well, and the same total time at the feeds (the planner ramps between them).
+  constexpr double kStep = 1.05;
+  constexpr int kMaxPieces = 32;
+  if (e.rapid || !state_.constant_cutting_speed || state_.feed_mode != FeedMode::PerRevolution ||
+      state_.motion != MotionMode::Linear || state_.thread_mode() || !e.extra_axes.empty() || recorder_.active())
+    return false;
+  const double speed = cutting_speed_mm_min(state_.cutting_speed);
+  const Vector3d start = position_, end = e.curve->end();
+  const double n0 = g96_set_speed(start, speed), n1 = g96_set_speed(end, speed);
+  if (!(n0 > 0 && n1 > 0) || std::max(n0, n1) / std::min(n0, n1) <= kStep) return false;
+  const int pieces = std::clamp(static_cast<int>(std::ceil(std::log(std::max(n0, n1) / std::min(n0, n1)) / std::log(kStep))),
+                                2, kMaxPieces);
+  for (int k = 1; k <= pieces; ++k) {
+    PathElement piece = e;
+    const Vector3d to = k == pieces ? end : start + (end - start) * (static_cast<double>(k) / pieces);
+    piece.curve = line_curve(position_, to);
+    piece.feed_mm_s = feed_mm_s(ctx, piece.path_length(), to - position_);
+    piece.block_length_mm = e.curve->length();  // the block change is the block's (short-block rule)
+    if (k < pieces) {
+      piece.corner = {};  // a chamfer or rounding at the block's end only
+      piece.continues_block = true;
+      piece.dynamics.exact_stop_this_block = false;
+      if (piece.dynamics.transition == TransitionMode::ExactStop) piece.dynamics.transition = TransitionMode::Continuous;
+    }
+    position_ = to;
+    emit(std::move(piece));
+  }
+  return true;
 }
 
 PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {

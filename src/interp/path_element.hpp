@@ -169,6 +169,9 @@ struct PathElement {
   // or G450 flatter than MD20230). On the control that is the adjacent block lengthened, so the
   // compressor joins it with its neighbours (cutter_compensation.cpp, block_compressor.cpp).
   bool offset_extension = false;
+  // The next element is a piece of the same programmed block (a G96 cut split at its feeds):
+  // reported as one block with it; no block change (and no exact stop) between them.
+  bool continues_block = false;
   DynamicsMode dynamics;
   double dwell_s = 0.0;          // Dwell
   // The spindle run-up (interp/interpreter_spindle_run_up.cpp): the element that begins ramp

@@ -566,7 +566,29 @@ void Planner::report_commit(WindowElement& w, CommitTally& tally) {
   timing.compressed_blocks = w.element.compressed_blocks;
   timing.compress_deviation_mm = w.element.compress_deviation_mm;
   timing.smoothing_deviation_mm = w.element.smoothing_deviation_mm;
-  observer_.on_block(timing);
+  if (block_so_far_ || e.continues_block) {
+    // Pieces of one programmed block (a G96 facing cut at its changing feeds): one timing.
+    if (block_so_far_) {
+      BlockTiming& b = *block_so_far_;
+      b.time_s += timing.time_s;
+      b.length_mm += timing.length_mm;
+      b.v_max_mm_s = std::max(b.v_max_mm_s, timing.v_max_mm_s);
+      if (timing.v_min_mm_s < b.v_min_mm_s) {
+        b.v_min_mm_s = timing.v_min_mm_s;
+        b.limit = timing.limit;
+      }
+    } else {
+      block_so_far_ = timing;
+    }
+    if (e.continues_block) {
+      w.element.source = std::move(timing.source);
+      return;
+    }
+    observer_.on_block(*block_so_far_);
+    block_so_far_.reset();
+  } else {
+    observer_.on_block(timing);
+  }
   w.element.source = std::move(timing.source);  // kept by the spare (append_motion)
 }
 

@@ -127,6 +127,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "interp/path_element.hpp"
@@ -200,6 +201,7 @@ class Planner : public interp::ElementSink {
   double time_segment(const WindowElement& w, const Segment& seg, const Node& next, const RampAnchor& rise,
                       double v, double reach, double v1, double& peak);
   void report_commit(WindowElement& w, CommitTally& tally);
+  std::optional<BlockTiming> block_so_far_;  // the pieces of a block committed so far
   void add_to_summary(const interp::PathElement& e, bool moved, const CommitTally& tally, double to_contour);
   void retire_front(WindowElement& w);
   void flush();

@@ -355,5 +355,21 @@ TEST(Planner, DipsAreBoundedAndCounted) {
   EXPECT_EQ(r.summary.dips[3].limit, Limit::Corner);
 }
 
+TEST(Planner, PiecesOfOneBlockAreReportedAsOneBlock) {
+  // A block in two collinear pieces (a G96 cut at its changing feeds: F3000, then F6000) is one
+  // timing: the pieces' times and lengths added, the highest and lowest velocity of both. BRISK,
+  // a = 5000: 0 -> 50 mm/s (0.25 mm, 0.01 s), 50 -> 100 mm/s at the join (0.75 mm, 0.01 s),
+  // 100 -> 0 (1 mm, 0.02 s): t = 0.01 + 99.75/50 + 0.01 + 98.25/100 + 0.02 = 3.0175 s.
+  interp::PathElement first = line(O, Vec3(100, 0, 0), 3000, {}, 7);
+  first.continues_block = true;
+  PlanRun r = plan(plain_profile(), {first, line(Vec3(100, 0, 0), Vec3(200, 0, 0), 6000, {}, 7)});
+  ASSERT_EQ(r.rec.blocks.size(), 1u);
+  EXPECT_EQ(r.rec.blocks[0].source.line, 7u);
+  EXPECT_NEAR(r.rec.blocks[0].length_mm, 200.0, 1e-9);
+  EXPECT_NEAR(r.rec.blocks[0].time_s, 3.0175, 1e-9);
+  EXPECT_NEAR(r.rec.blocks[0].v_max_mm_s, 100.0, 1e-9);
+  EXPECT_NEAR(r.summary.time_s, 3.0175, 1e-9);
+}
+
 }  // namespace
 }  // namespace drycut::motion::testing
