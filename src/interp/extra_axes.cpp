@@ -138,5 +138,4 @@ const ExtraAxes::AsyncMove* ExtraAxes::moving_at(const std::string& axis, double
   return nullptr;
 }
 
-
 }  // namespace drycut::interp

@@ -36,9 +36,7 @@ bool Interpreter::note_extra_axis_word(BlockContext& ctx, const AddressWord& a) 
   if (const int i = extra_axes_.index(a.name); i >= 0) {
     ctx.extra_words.emplace_back(static_cast<size_t>(i), &a);
     // An axis still on its way from POSA: the block waits for it first (implicit WAITP).
-    if (extra_axes_.running(a.name)) {
-      wait_for(ctx, a.name);
-    }
+    if (extra_axes_.running(a.name)) wait_for(ctx, a.name);
     return true;
   }
   if (is_axis_letter_name(a.name)) {

@@ -449,7 +449,7 @@ class ProgramLoader::BlockBuilder {
     }
     // The program checks the machine (IF $A_IN[5]==0 SETAL(65000,"AIR PRESSURE")): with a signal
     // the dry run does not know, the alarm is the dry run's guess, not the machine's state.
-    if (const std::string input = l_.alarm_decided_by_unknown_input(); !input.empty()) {
+    if (const std::string input = l_.alarm_decided_by_unknown_input(static_cast<int>(n)); !input.empty()) {
       const bool measured = input.starts_with("$AA_M");
       l_.warn(990021, "SETAL(" + number_to_text(n) + ", \"" + text + "\") follows from " + input +
                           (measured ? ", a measured value (a dry run touches nothing)"

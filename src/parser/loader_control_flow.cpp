@@ -395,7 +395,7 @@ void ProgramLoader::note_input_jump() {
   if (std::string input = condition_input(); !input.empty()) input_jump_ = {std::move(input), steps_};
 }
 
-std::string ProgramLoader::alarm_decided_by_unknown_input() const {
+std::string ProgramLoader::alarm_decided_by_unknown_input(int alarm) const {
   // The IF (or ELSE) blocks the alarm stands in, innermost first, then a jump decided by an
   // input that arrived here within the last few lines (IF $A_IN[5]==0 GOTOF ERR / ERR: SETAL),
   // then a measured value read before.
@@ -406,9 +406,12 @@ std::string ProgramLoader::alarm_decided_by_unknown_input() const {
   if (!input_jump_.first.empty() && steps_ - input_jump_.second <= kLinesAfterJump &&
       !system_variables_.signal_given(input_jump_.first))
     return input_jump_.first;
-  // After a measurement every check may hang on the measured value (through the variables the
-  // macro computes from it: _D=_XP-_XM, IF _D>20.5 SETAL): a dry run measured nothing.
-  return system_variables_.measurement_read();
+  // After a measurement every check of the program's own alarms (60000..60999, 65000..69999;
+  // not the standard cycles' 61000..64999, which check their parameters) may hang on the
+  // measured value through the variables the macro computes from it (_D=_XP-_XM, IF _D>20.5
+  // SETAL): a dry run measured nothing.
+  const bool own_alarm = alarm < 61000 || alarm >= 65000;
+  return own_alarm ? system_variables_.measurement_read() : std::string();
 }
 
 void ProgramLoader::execute_case() {

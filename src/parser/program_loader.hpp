@@ -189,7 +189,7 @@ class ProgramLoader {
   // An IF-GOTO decided by an input remembers it (input_jump_); a SETAL in a branch an input the
   // profile does not give decided names that input (the alarm is then only warned, 990021).
   void note_input_jump();
-  std::string alarm_decided_by_unknown_input() const;
+  std::string alarm_decided_by_unknown_input(int alarm) const;
   void loop_state(std::string& out) const;
   void jump(JumpDirection direction, const JumpTarget& target);
   void jump_to_start();
