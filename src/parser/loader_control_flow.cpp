@@ -194,8 +194,11 @@ void ProgramLoader::next_for_pass(Frame& f, uint32_t column) {
     value = r_parameters_[static_cast<size_t>(index)] += 1.0;
   }
   if (value <= top.end) {
-    f.reader.seek(top.body);  // the variable changed: never the same state,
-    check_endless_loop();     // but a FOR may count the timeout of a wait for an input
+    f.reader.seek(top.body);  // the variable changed: never the same state, but a FOR whose
+    // pass read an input may count the timeout of a wait for it (checked only then: FOR loops
+    // that compute run 400 k passes in a CAM macro)
+    if (system_variables_.input_reads() != input_reads_at_endfor_) check_endless_loop();
+    input_reads_at_endfor_ = system_variables_.input_reads();
   } else
     f.control.pop_back();
 }
