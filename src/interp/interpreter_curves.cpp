@@ -48,7 +48,7 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   if (!extra.empty()) attach_extra_axes(ctx, e, std::move(extra));  // (most blocks move no extra axis)
   mark_for_compressor(ctx, e);
   request_corner(ctx, e);
-  if (!arc && emit_constant_cutting_speed_pieces(ctx, e)) return;
+  if (emit_constant_cutting_speed_pieces(ctx, e)) return;
   position_ = e.curve->end();
   if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
   emit(std::move(e));

@@ -201,7 +201,6 @@ class Planner : public interp::ElementSink {
   double time_segment(const WindowElement& w, const Segment& seg, const Node& next, const RampAnchor& rise,
                       double v, double reach, double v1, double& peak);
   void report_commit(WindowElement& w, CommitTally& tally);
-  std::optional<BlockTiming> block_so_far_;  // the pieces of a block committed so far
   void add_to_summary(const interp::PathElement& e, bool moved, const CommitTally& tally, double to_contour);
   void retire_front(WindowElement& w);
   void flush();
@@ -248,6 +247,7 @@ class Planner : public interp::ElementSink {
   size_t peak_elements_ = 0;
   FeedDipCollector dips_;
   PlanSummary summary_;
+  std::optional<BlockTiming> block_so_far_;  // the pieces of one block committed so far (report_commit)
   PositioningAxes positioning_;
   double block_start_s_ = 0;
   // The spindle ramp whose start was last passed (id 0: none) and the clock then.

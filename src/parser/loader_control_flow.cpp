@@ -266,6 +266,16 @@ void ProgramLoader::jump(JumpDirection direction, const JumpTarget& target) {
   jump_to(direction, std::string(target.label), target.number, target.column);
 }
 
+namespace {
+// "N50" as a jump target or section marker (GOTOF "N"<<R1, REPEAT N50 P=2): block number 50. A label cannot be N and digits
+// (its first two characters are letters or underscores), so the two never mix.
+std::optional<int64_t> marker_block_number(const std::string& marker) {
+  if (marker.size() < 2 || marker.size() > 19 || marker[0] != 'N') return std::nullopt;
+  if (!std::all_of(marker.begin() + 1, marker.end(), [](char c) { return c >= '0' && c <= '9'; })) return std::nullopt;
+  return std::stoll(marker.substr(1));
+}
+}  // namespace
+
 void ProgramLoader::jump_to_value(JumpDirection direction, const Value& target, uint32_t column) {
   // A computed target: a number is a block number; a string a label, or a block number when it
   // reads "N<digits>" (Job Planning: the STRING stands for a jump marker or a block number; a
@@ -275,9 +285,7 @@ void ProgramLoader::jump_to_value(JumpDirection direction, const Value& target, 
     return;
   }
   const std::string text = upper_ascii(target.text);
-  const bool block_number = text.size() > 1 && text[0] == 'N' &&
-                            std::all_of(text.begin() + 1, text.end(), [](char c) { return c >= '0' && c <= '9'; });
-  if (block_number && text.size() <= 19) jump_to(direction, {}, std::stoll(text.substr(1)), column);
+  if (const auto number = marker_block_number(text)) jump_to(direction, {}, number, column);
   else jump_to(direction, text, std::nullopt, column);
 }
 
@@ -451,16 +459,6 @@ void ProgramLoader::execute_case() {
     }
   }
 }
-
-namespace {
-// "N50" as a section marker (REPEAT N50 P=2): block number 50. A label cannot be N and digits
-// (its first two characters are letters or underscores), so the two never mix.
-std::optional<int64_t> marker_block_number(const std::string& marker) {
-  if (marker.size() < 2 || marker.size() > 19 || marker[0] != 'N') return std::nullopt;
-  if (!std::all_of(marker.begin() + 1, marker.end(), [](char c) { return c >= '0' && c <= '9'; })) return std::nullopt;
-  return std::stoll(marker.substr(1));
-}
-}  // namespace
 
 std::optional<LinePosition> ProgramLoader::find_label_position(const std::string& label) {
   Frame& f = *frames_.back();

@@ -127,9 +127,8 @@ class SystemVariables {
   const std::string& settled_read() const { return settled_read_; }
   void forget_settled_read() { settled_read_.clear(); }
   // A wait on `key` ended (the loop guard took the signal as come): a digital input ($A_IN[n])
-  // reads its other value from now on. Other data (bytes, words) have no one awaited value.
-  // The awaited signal came: a digital input ($A_IN[n]) takes the other value; false for any
-  // other signal (its awaited value is not known).
+  // reads its other value from now on. Other data (bytes, words) have no one awaited value:
+  // false, and they keep theirs.
   bool input_arrived(const std::string& key);
   // Whether the profile gives the input or PLC datum `key` a value (its machine_data).
   bool signal_given(const std::string& key) const { return given_signals_.count(key) > 0; }
