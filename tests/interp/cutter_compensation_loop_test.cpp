@@ -13,6 +13,7 @@
 #include "compensation_test_curves.hpp"
 #include "cutter_compensation_test_support.hpp"
 #include "interp/cutter_compensation.hpp"
+#include "polyline_distance.hpp"
 
 namespace drycut::interp {
 namespace {
@@ -100,12 +101,6 @@ TEST(CutterCompensationLoop, GentleBendOnTheOtherSideIsNotCut) {
 
 // The thesis contour r(theta) = 18 + 4 cos 6theta cos 2theta as 0.05 mm chords, milled outside
 // with G42 counter-clockwise: every tool-centre sample lies 2 mm from the polyline.
-double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
-  return (a + t * ab - p).norm();
-}
-
 TEST(CutterCompensationLoop, ThesisContourToolPathIsAtToolRadiusEverywhere) {
   auto polar = [](double t) {
     const double r = 18 + 4 * std::cos(6 * t) * std::cos(2 * t);
@@ -130,14 +125,13 @@ TEST(CutterCompensationLoop, ThesisContourToolPathIsAtToolRadiusEverywhere) {
   EXPECT_TRUE(run.diagnostics.items().empty());
   std::vector<Eigen::Vector2d> poly;
   for (const Vec3& p : points) poly.emplace_back(p.x(), p.y());
+  const test::PolylineDistance polyline(poly);
   double worst = 0.0;
   for (size_t k = 1; k + 1 < out.size(); ++k) {
     const auto& curve = *out[k].curve;
     for (int i = 0; i <= 2; ++i) {
       const Vec3 p = curve.at(curve.length() * i / 2).position;
-      const Eigen::Vector2d q(p.x(), p.y());
-      double best = std::numeric_limits<double>::infinity();
-      for (size_t j = 1; j < poly.size(); ++j) best = std::min(best, distance_to_segment(q, poly[j - 1], poly[j]));
+      const double best = polyline.distance(p.x(), p.y());
       worst = std::max(worst, std::abs(best - 2.0));
       EXPECT_NEAR(p.z(), -6.0, 1e-12);
     }

@@ -154,8 +154,10 @@ TEST(Feeds, ConstantCuttingSpeedFollowsTheDiameter) {
   for (size_t k = 1; k < cut.size(); ++k) {
     seconds += cut[k].curve->length() / cut[k].feed_mm_s;
     ++pieces;
-    if (k > 1) EXPECT_LT(cut[k].feed_mm_s, cut[k - 1].feed_mm_s);
-    if (k > 1) EXPECT_LE(cut[k - 1].feed_mm_s / cut[k].feed_mm_s, 1.05 * 1.05);
+    if (k > 1) {
+      EXPECT_LT(cut[k].feed_mm_s, cut[k - 1].feed_mm_s);
+      EXPECT_LE(cut[k - 1].feed_mm_s / cut[k].feed_mm_s, 1.05 * 1.05);
+    }
     if (!cut[k].continues_block) break;
   }
   EXPECT_EQ(pieces, 9u);  // ceil(ln(1.5) / ln(1.05)) = 9

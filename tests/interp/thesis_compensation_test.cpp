@@ -19,6 +19,7 @@
 #include "interp/interpreter.hpp"
 #include "machine/machine_profile.hpp"
 #include "parser/program_loader.hpp"
+#include "polyline_distance.hpp"
 #include "workload/thesis_programs.hpp"
 
 // The programs come from the very generator `drycut generate --thesis` uses.
@@ -178,17 +179,6 @@ TEST(ThesisCompensation, LinearLoopsHaveNoElementMovingZAlone) {
   }
 }
 
-// In-plane distance from p to a polyline given as dense samples of the programmed path.
-double distance_to_polyline(const Eigen::Vector2d& p, const std::vector<Eigen::Vector2d>& poly) {
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t j = 1; j < poly.size(); ++j) {
-    const Eigen::Vector2d ab = poly[j] - poly[j - 1];
-    const double t = std::clamp((p - poly[j - 1]).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
-    best = std::min(best, (poly[j - 1] + t * ab - p).norm());
-  }
-  return best;
-}
-
 bool at_loop_depth(const geometry::Curve& c) {
   return std::abs(c.start().z() + 6.0) < 1e-9 && std::abs(c.end().z() + 6.0) < 1e-9;
 }
@@ -210,6 +200,7 @@ TEST(ThesisCompensation, CSpline45ToolCentreIsAtToolRadiusOnTheConstantDepthLoop
     }
   }
   ASSERT_GT(programmed.size(), 10000u);
+  const test::PolylineDistance programmed_loop(programmed);
   // Chord error of the 0.002 mm sampling on radius >= 0.2 mm: below 3e-6 mm.
   size_t samples = 0;
   double lowest = 1e9, highest = 0.0;
@@ -217,7 +208,7 @@ TEST(ThesisCompensation, CSpline45ToolCentreIsAtToolRadiusOnTheConstantDepthLoop
     if (!at_loop_depth(*e.curve)) continue;
     for (int i = 0; i <= 10; ++i) {
       const Vec3 p = e.curve->at(e.curve->length() * i / 10).position;
-      const double d = distance_to_polyline({p.x(), p.y()}, programmed);
+      const double d = programmed_loop.distance(p.x(), p.y());
       lowest = std::min(lowest, d);
       highest = std::max(highest, d);
       EXPECT_NEAR(d, 2.0, 1e-3) << e.source.text << " at " << p.transpose();
