@@ -9,6 +9,7 @@
 #include "interp/block_compressor.hpp"
 #include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
+#include "interp/cutting_speed_pieces.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/pipelined_sink.hpp"
 #include "machine/tool_table_file.hpp"
@@ -147,7 +148,8 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
 PipelineOutcome run_program_tool_centre(const ProgramOptions& options, const machine::MachineProfile& profile,
                                         interp::ElementSink& sink) {
   Diagnostics compensation_diagnostics;
-  interp::CornerSmoothing smoothing(sink, profile);
+  interp::CuttingSpeedPieces pieces(sink);
+  interp::CornerSmoothing smoothing(pieces, profile);
   interp::BlockCompressor compressor(smoothing, profile);
   interp::CutterCompensation compensation(compressor, profile, compensation_diagnostics);
   PipelineOutcome outcome = run_program(options, profile, compensation);

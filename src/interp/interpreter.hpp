@@ -225,7 +225,7 @@ class Interpreter {
   // `chord`: the block's move (end - start), over which G96 follows the diameter.
   double spindle_speed(const BlockContext& ctx, const Eigen::Vector3d* chord = nullptr);
   // G96 under G95 on a line that changes the diameter: emitted in pieces, each at its own feed.
-  bool emit_constant_cutting_speed_pieces(BlockContext& ctx, const PathElement& e);
+  void attach_cutting_speed_law(BlockContext& ctx, PathElement& e);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
   double cutting_speed_mm_min(double speed) const;  // G96 S / SVC (m/min or ft/min) in mm/min
   double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)

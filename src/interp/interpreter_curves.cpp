@@ -48,45 +48,31 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   if (!extra.empty()) attach_extra_axes(ctx, e, std::move(extra));  // (most blocks move no extra axis)
   mark_for_compressor(ctx, e);
   request_corner(ctx, e);
-  if (emit_constant_cutting_speed_pieces(ctx, e)) return;
+  attach_cutting_speed_law(ctx, e);
   position_ = e.curve->end();
   if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
   emit(std::move(e));
 }
 
-bool Interpreter::emit_constant_cutting_speed_pieces(BlockContext& ctx, const PathElement& e) {
+void Interpreter::attach_cutting_speed_law(BlockContext& ctx, PathElement& e) {
   // G96 with G95 on a facing or taper cut: the feed f·n follows the diameter along the block (n
-  // from 200 to 900 rev/min on a face). One mean feed gives the block its true time but a flat
-  // velocity; pieces whose speeds differ by at most kStep each (equal lengths, each at the
-  // harmonic mean of its own diameters: constant_cutting_speed.hpp) give the feed its course as
-  // well, and the same total time at the feeds (the planner ramps between them).
-  constexpr double kStep = 1.05;
-  constexpr int kMaxPieces = 32;
+  // from 200 to 900 rev/min on a face). The block keeps the one feed that gives it its true time;
+  // the law lets the last stage before the planner give the feed its course as well, on the
+  // element as chamfers, roundings and the tool radius compensation have left it.
   if (e.rapid || !state_.constant_cutting_speed || state_.feed_mode != FeedMode::PerRevolution ||
       state_.motion != MotionMode::Linear || state_.thread_mode() || !e.extra_axes.empty() || recorder_.active())
-    return false;
-  const double speed = cutting_speed_mm_min(state_.cutting_speed);
-  const Vector3d start = position_, end = e.curve->end();
-  const double n0 = g96_set_speed(start, speed), n1 = g96_set_speed(end, speed);
-  if (!(n0 > 0 && n1 > 0) || std::max(n0, n1) / std::min(n0, n1) <= kStep) return false;
-  const int pieces = std::clamp(static_cast<int>(std::ceil(std::log(std::max(n0, n1) / std::min(n0, n1)) / std::log(kStep))),
-                                2, kMaxPieces);
-  for (int k = 1; k <= pieces; ++k) {
-    PathElement piece = e;
-    const Vector3d to = k == pieces ? end : start + (end - start) * (static_cast<double>(k) / pieces);
-    piece.curve = line_curve(position_, to);
-    piece.feed_mm_s = feed_mm_s(ctx, piece.path_length(), to - position_);
-    piece.block_length_mm = e.curve->length();  // the block change is the block's (short-block rule)
-    if (k < pieces) {
-      piece.corner = {};  // a chamfer or rounding at the block's end only
-      piece.continues_block = true;
-      piece.dynamics.exact_stop_this_block = false;
-      if (piece.dynamics.transition == TransitionMode::ExactStop) piece.dynamics.transition = TransitionMode::Continuous;
-    }
-    position_ = to;
-    emit(std::move(piece));
-  }
-  return true;
+    return;
+  // x(p) = to_inner(p - length)[axis] is affine in p: its offset and its gradient.
+  const Frame& frame = block_frame(ctx);
+  const int axis = state_.cutting_speed_axis;
+  auto law = std::make_shared<CuttingSpeedLaw>();
+  law->speed_mm_min = cutting_speed_mm_min(state_.cutting_speed);
+  law->min_rpm = spindle_min_rpm_;
+  law->max_rpm = g96_speed_ceiling();
+  law->offset = frame.to_inner(-length_applied_)[axis];
+  for (int i = 0; i < 3; ++i)
+    law->along[i] = frame.to_inner(Vector3d::Unit(i) - length_applied_)[axis] - law->offset;
+  e.cutting_speed = std::move(law);
 }
 
 PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {

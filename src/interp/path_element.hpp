@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -152,6 +153,19 @@ struct ContourCornerRequest {
   int program_level = 0;   // the block's program level (the next motion must be in the same)
 };
 
+// G96 under G95 on a cut (interp/constant_cutting_speed.hpp): the spindle speed at a point p
+// follows x = along·p + offset, the SCC axis's position in the workpiece system (tool length
+// taken off), so the feed f·n changes along the element. Set by the interpreter; the last stage
+// before the planner splits the element at its feeds (interp/cutting_speed_pieces.hpp).
+struct CuttingSpeedLaw {
+  double speed_mm_min = 0.0;  // Vc
+  double min_rpm = 0.0;       // G25 (0: none)
+  double max_rpm = 0.0;       // LIMS, G26, MD35100
+  geometry::Vec3 along = geometry::Vec3::Zero();
+  double offset = 0.0;
+  double x_at(const geometry::Vec3& p) const { return along.dot(p) + offset; }
+};
+
 struct PathElement {
   ElementKind kind = ElementKind::Line;
   geometry::CurvePtr curve;      // set for Line, Arc, SplineSpan
@@ -172,6 +186,8 @@ struct PathElement {
   // The next element is a piece of the same programmed block (a G96 cut split at its feeds):
   // reported as one block with it; no block change (and no exact stop) between them.
   bool continues_block = false;
+  std::shared_ptr<const CuttingSpeedLaw> cutting_speed;  // G96 under G95 on a straight cut
+
   DynamicsMode dynamics;
   double dwell_s = 0.0;          // Dwell
   // The spindle run-up (interp/interpreter_spindle_run_up.cpp): the element that begins ramp

@@ -56,14 +56,21 @@ class ProgramLoader::BlockBuilder {
   void m_word(const Item& item) { add_m(item, item.code, item.expr, item.extension); }
 
   void add_m(const Item& item, int64_t code, ExprIndex expr, int extension) {
+    // M is an INT auxiliary function value, 0..2147483647 (Fundamentals, "Auxiliary functions":
+    // machine builders' M functions above 999, M1010 or M=QU(1500), are ordinary; until
+    // 2026-11-29 drycut refused every M above 999 with 12160).
+    constexpr double kMaxM = 2147483647.0;
     if (expr != kNoExpr) {
       const double v = l_.eval(expr);
-      if (v < 0 || v != std::trunc(v) || v > 999) throw LineError(12160, item.column, "M value must be an integer 0..999");
+      if (v < 0 || v != std::trunc(v) || v > kMaxM) throw LineError(12160, item.column, "M value must be an integer 0..2147483647");
       code = static_cast<int64_t>(v);
     }
-    if (code > 999) throw LineError(12160, item.column, "M value must be an integer 0..999");
+    if (code > static_cast<int64_t>(kMaxM)) throw LineError(12160, item.column, "M value must be an integer 0..2147483647");
     out_.m.push_back(MWord{static_cast<int>(code), extension, item.column});
-    l_.m_used_.set(static_cast<size_t>(code));
+    if (code < static_cast<int64_t>(l_.m_used_.size()))
+      l_.m_used_.set(static_cast<size_t>(code));
+    else
+      l_.commands_used_.insert("M" + std::to_string(code));
     has_words_ = true;
     if (code == 17) action_ = PendingAction::Return;
     // At M0 the operator may change values (R parameters) before restarting: a loop through the

@@ -37,6 +37,10 @@ constexpr std::array kSyntax{
     Row{"X1= S1= M2=3 H7=40", M, "extended addresses: axis names, spindle/auxiliary function numbers"},
     Row{"G[group]=n", M, "indirect G code by group and internal number (groups 1 6 7 8 10 12 13 14 15 18, named 21 30 59)"},
     Row{"M[n]= S[n]= H[n]= T[n]= D[n]=", M, "address extension as an expression"},
+    Row{"M1010 M=QU(1500) M1=1000", M,
+        "M values are INT, 0..2147483647 (Fundamentals, \"Auxiliary functions\", value range of M; machine builders' "
+        "functions above 999 are common); a value outside is 12160. Until 2026-11-29 every M above 999 was refused "
+        "(conformance `language/m_function_above_999.mpf`)"},
     Row{"AX[axis]=", M, "axis given by an AXIS value"},
     Row{"1.5EX3, 'H1F', 'B101'", M, "exponent, hexadecimal and binary constants"},
     Row{"\"text\"", M, "string constant"},

@@ -142,13 +142,17 @@ TEST(Feeds, TappingAndSpindleRampDwells) {
 
 TEST(Feeds, ConstantCuttingSpeedFollowsTheDiameter) {
   // G96 S200 (m/min) from X20 to X30: n = 200000/(2π r); the block's time at F0.1 mm/rev is
-  // ∫ dr / (0.1 n) = 2π (30² − 20²) / (2 · 200000 · 0.1) min. The block comes in pieces, each at
-  // its own feed (speeds 1591.5 .. 1061.0 rev/min: 9 steps of at most 5 %), falling outwards;
-  // their times at their feeds add up to that integral.
+  // ∫ dr / (0.1 n) = 2π (30² − 20²) / (2 · 200000 · 0.1) min. The interpreter gives the block
+  // the feed of that time; the last stage before the planner cuts it into pieces, each at its
+  // own feed (speeds 1591.5 .. 1061.0 rev/min: 9 steps of at most 5 %), falling outwards; their
+  // times at their feeds add up to that integral too.
   auto r = run_program("S1 M3\nG0 X20\nG96 S200\nG1 X30 F0.1\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
   const double minutes = 2 * std::numbers::pi * (30.0 * 30 - 20.0 * 20) / (2 * 200000 * 0.1);
-  const auto cut = r->sink.motions();
+  const auto block = r->sink.motions();
+  ASSERT_EQ(block.size(), 2u);
+  EXPECT_NEAR(block[1].curve->length() / block[1].feed_mm_s, minutes * 60, 1e-9);
+  const auto cut = with_cutting_speed_pieces(block);
   double seconds = 0;
   size_t pieces = 0;
   for (size_t k = 1; k < cut.size(); ++k) {
@@ -170,6 +174,30 @@ TEST(Feeds, ConstantCuttingSpeedFollowsTheDiameter) {
   auto frozen = run_program("S1 M3\nG0 X25\nG96 S200\nG97\nG1 X40 F0.1\nM30\n");
   ASSERT_FALSE(frozen->alarm) << frozen->alarm->format();
   EXPECT_NEAR(frozen->sink.motions()[1].feed_mm_s, 0.1 * 200000 / (50 * std::numbers::pi) / 60, 1e-9);
+}
+
+TEST(Feeds, ConstantCuttingSpeedPiecesComeAfterTheChamfer) {
+  // G18, radius X: the face X40 -> X80 under G96 S200 F0.2 with CHR=2 into Z-20. The chamfer is
+  // cut whole (legs 2 mm at the 90-degree corner: 2·√2 long, no 990015 reduction), the face
+  // ends 2 mm short (X78); the pieces of that trimmed face come after it and take its time.
+  auto r = run_program("G18\nS1 M3\nG0 X40 Z0\nG96 S200 LIMS=4000\nG1 X80 F0.2 CHR=2\nZ-20\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  for (const auto& a : r->diagnostics.items()) EXPECT_NE(a.number, 990015) << a.format();
+  const auto m = r->sink.motions();
+  ASSERT_EQ(m.size(), 4u);  // rapid, face, chamfer, Z pass
+  EXPECT_NEAR(m[1].curve->end().x(), 78.0, 1e-9);
+  EXPECT_NEAR(m[2].curve->length(), 2.0 * std::sqrt(2.0), 1e-9);
+  ASSERT_TRUE(m[1].cutting_speed) << "the face carries its spindle speed law";
+  const auto cut = with_cutting_speed_pieces(m);
+  double seconds = 0;
+  size_t k = 1;
+  for (; k < cut.size(); ++k) {
+    seconds += cut[k].curve->length() / cut[k].feed_mm_s;
+    if (!cut[k].continues_block) break;
+  }
+  EXPECT_GT(k, 2u) << "the face comes in pieces";
+  EXPECT_NEAR(cut[k].curve->end().x(), 78.0, 1e-9);
+  EXPECT_NEAR(seconds, m[1].curve->length() / m[1].feed_mm_s, 1e-9);
 }
 
 TEST(Feeds, DwellInSpindleRevolutions) {

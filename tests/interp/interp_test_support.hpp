@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "interp/cutting_speed_pieces.hpp"
 #include "interp/interpreter.hpp"
 #include "parser/program_loader.hpp"
 
@@ -25,6 +26,15 @@ class CollectingSink : public ElementSink {
   std::vector<PathElement> elements;
   bool finished = false;
 };
+
+// The motions after the G96 stage (cutting_speed_pieces.hpp), as the planner receives them.
+inline std::vector<PathElement> with_cutting_speed_pieces(const std::vector<PathElement>& motions) {
+  CollectingSink out;
+  CuttingSpeedPieces stage(out);
+  for (const auto& e : motions) stage.consume(PathElement(e));
+  stage.finish();
+  return out.motions();
+}
 
 // A small machine: axes ±1000 mm, G54 = (10, 20, 0), tool FR_4 (T1) with D1 r = 2 mm.
 inline machine::MachineProfile test_profile() {

@@ -50,7 +50,7 @@ TEST(SpindleLimits, G26LimitsTheConstantCuttingSpeed) {
   // the first at the G26 speed.
   auto r = run_program("G0 X10\nG26 S2000\nS500 M3\nG96 S200\nG1 X20 F0.1\nM30\n");
   ASSERT_FALSE(r->alarm) << r->alarm->format();
-  auto m = r->sink.motions();
+  const auto m = with_cutting_speed_pieces(r->sink.motions());
   const double r_c = 200000 / (2 * std::numbers::pi * 2000);
   const double per_rev = (r_c - 10) / 2000 + std::numbers::pi * (20.0 * 20 - r_c * r_c) / 200000;
   double seconds = 0;
