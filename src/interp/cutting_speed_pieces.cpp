@@ -40,7 +40,6 @@ void CuttingSpeedPieces::consume(PathElement&& e) {
     piece.feed_mm_s = e.feed_mm_s * rpm(xa + (xb - xa) * f0, xa + (xb - xa) * f1) / mean;
     piece.block_length_mm = block_length;  // the block change is the block's (short-block rule)
     if (k < pieces) {
-      piece.corner = {};
       piece.continues_block = true;
       piece.dynamics.exact_stop_this_block = false;
       if (piece.dynamics.transition == TransitionMode::ExactStop) piece.dynamics.transition = TransitionMode::Continuous;

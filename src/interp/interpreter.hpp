@@ -224,7 +224,7 @@ class Interpreter {
   void speed_from_cutting_speed(const BlockContext& ctx, uint32_t column);  // S from SVC and the edge radius
   // `chord`: the block's move (end - start), over which G96 follows the diameter.
   double spindle_speed(const BlockContext& ctx, const Eigen::Vector3d* chord = nullptr);
-  // G96 under G95 on a line that changes the diameter: emitted in pieces, each at its own feed.
+  // G96 under G95 on a line: the spindle-speed law the last stage cuts it into pieces by.
   void attach_cutting_speed_law(BlockContext& ctx, PathElement& e);
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
   double cutting_speed_mm_min(double speed) const;  // G96 S / SVC (m/min or ft/min) in mm/min

@@ -1,6 +1,5 @@
 // The curves of motion blocks: lines, circles (all G2/G3/CIP/CT forms, built in the workpiece
 // system and mapped through the frame) and spline runs.
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
