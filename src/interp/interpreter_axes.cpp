@@ -345,21 +345,26 @@ void Interpreter::add_spindle_positioning(BlockContext& ctx, const AxisWord& w) 
   m.axis = name;
   m.velocity = profile_.spindle_posctrl_velo_rpm * kTurn / 60.0;
   m.accel = profile_.spindle_posctrl_accel_rev_s2 * kTurn;
+  // From rotation (Function Manual S1 Spindles, "Positioning from rotation"): above MD35300 the
+  // spindle brakes at MD35200 down to it; position control takes over at the speed it then turns
+  // at (MD35300, or its own when slower), it turns on to its braking point and brakes at MD35210
+  // onto the position. Where it stands when position control takes over is unknown in a dry run:
+  // the position is taken half a turn beyond the braking distance (the mean over all angles).
+  const auto from_rotation = [&](double turning_rpm) {
+    const double posctrl_rpm = profile_.spindle_posctrl_velo_rpm;
+    m.lead_time_s = std::max(0.0, turning_rpm - posctrl_rpm) / 60.0 / profile_.spindle_speedctrl_accel_rev_s2;
+    m.entry_velocity = std::min(turning_rpm, posctrl_rpm) * kTurn / 60.0;
+    m.velocity = m.entry_velocity;  // a slower spindle keeps its speed, it is not sped up to MD35300
+    m.travel = kTurn / 2 + (m.accel > 0 ? m.entry_velocity * m.entry_velocity / (2.0 * m.accel) : 0.0);
+  };
   if (w.mode == ValueMode::Incremental) {
     m.travel = std::abs(w.value);
   } else if (turning) {
-    // From rotation the spindle brakes to the positioning speed, finds its position and turns on
-    // in its direction: where it stands is unknown in a dry run, so half a turn is taken.
-    const double brake_rev_s = std::max(0.0, rpm - profile_.spindle_posctrl_velo_rpm) / 60.0;
-    m.lead_time_s = brake_rev_s / profile_.spindle_speedctrl_accel_rev_s2;
-    m.travel = kTurn / 2;
+    from_rotation(rpm);
   } else if (const double braking_rpm = master_braking_.from_rpm - (nominal_time_s_ - master_braking_.since_s) * 60.0 *
                                                                      profile_.spindle_speedctrl_accel_rev_s2;
              master && master_braking_.from_rpm > 0 && braking_rpm > 0) {
-    // Still turning down after M5: as from rotation, at the speed it has come down to.
-    m.lead_time_s = std::max(0.0, braking_rpm - profile_.spindle_posctrl_velo_rpm) / 60.0 /
-                    profile_.spindle_speedctrl_accel_rev_s2;
-    m.travel = kTurn / 2;
+    from_rotation(braking_rpm);  // still turning down after M5: from the speed it has come down to
   } else {
     const ValueMode mode = w.mode == ValueMode::Default || w.mode == ValueMode::Absolute ? ValueMode::Direct : w.mode;
     double d = wrap_modulo(w.value, kTurn) - angle;  // each spindle's own angle (0 at the start)
@@ -428,7 +433,7 @@ void Interpreter::mark_running(const PositioningMove& m, double from, double tra
   // A POSA/SPOSA starts with its block: the clock knows when it arrives (WAITP waits for that,
   // $AA_IM reads where it is meanwhile).
   const double start = nominal_time_s();
-  const double duration = m.lead_time_s + rest_to_rest_s(m.travel, m.velocity, m.accel, m.jerk);
+  const double duration = m.lead_time_s + move_to_rest_s(m.travel, m.entry_velocity, m.velocity, m.accel, m.jerk);
   extra_axes_.mark_running({m.axis, from, travel, start + m.lead_time_s, start + duration, m.velocity, m.accel});
 }
 

@@ -71,7 +71,7 @@ void Interpreter::add_element_time(const PathElement& e) {
     double longest = 0.0;
     for (const PositioningMove& m : e.positioning)
       if (m.block_synchronous)
-        longest = std::max(longest, m.lead_time_s + rest_to_rest_s(m.travel, m.velocity, m.accel, m.jerk));
+        longest = std::max(longest, m.lead_time_s + move_to_rest_s(m.travel, m.entry_velocity, m.velocity, m.accel, m.jerk));
     nominal_time_s_ += longest;
     least_time_s_ += longest;
     return;

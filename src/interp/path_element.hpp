@@ -140,6 +140,7 @@ struct PositioningMove {
   double jerk = 0;           // 0: no jerk limit (BRISKA)
   double lead_time_s = 0;    // SPOS of a turning spindle: braking to the positioning speed first
   bool block_synchronous = true;  // POS/SPOS: the block ends when it arrives; POSA/SPOSA run on
+  double entry_velocity = 0;      // SPOS from rotation: turning at this speed when position control takes over
 };
 
 // A chamfer or rounding asked for at the end of this element (RND=, RNDM=, CHF=, CHR=; the

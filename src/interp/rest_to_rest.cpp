@@ -23,6 +23,21 @@ double rest_to_rest_s(double d, double v, double a, double j) {
   return 2.0 * ramp(u);
 }
 
+// From v0 the move rises to a peak u (at most v), cruises, and brakes to 0: rising covers
+// (u² - v0²)/(2a), braking u²/(2a). With d beyond both at u = v the cruise takes the rest;
+// otherwise u² = (2ad + v0²)/2 (no cruise), and the time is (u - v0)/a + u/a.
+double move_to_rest_s(double d, double v0, double v, double a, double j) {
+  if (!(v0 > 0)) return rest_to_rest_s(d, v, a, j);
+  if (!(a > 0)) return d > 0 ? d / v0 : 0.0;
+  const double top = std::max(v, v0);
+  const double braking = v0 * v0 / (2.0 * a);
+  if (!(d > braking)) return v0 / a;
+  const double ramps = (2.0 * top * top - v0 * v0) / (2.0 * a);
+  if (d >= ramps) return (top - v0) / a + top / a + (d - ramps) / top;
+  const double u = std::sqrt((2.0 * a * d + v0 * v0) / 2.0);
+  return (u - v0) / a + u / a;
+}
+
 double positioning_share(double distance, double v, double a, double duration, double t) {
   if (!(distance > 0) || !(v > 0) || !(a > 0) || !(duration > 0) || t >= duration) return 1.0;
   if (t <= 0) return 0.0;

@@ -9,7 +9,9 @@ namespace drycut::motion {
 double PositioningAxes::move_time(const interp::PositioningMove& m) {
   if (!(m.travel > 1e-12) || !(m.velocity > 0) || !(m.accel > 0)) return std::max(0.0, m.lead_time_s);
   const RampLimits limits{m.accel, m.jerk > 0 ? m.jerk : kNoJerkLimit};
-  return m.lead_time_s + plan_segment(0.0, 0.0, m.velocity, m.travel, limits).duration;
+  // SPOS from rotation enters position control turning (entry_velocity) and brakes to rest.
+  const double top = std::max(m.velocity, m.entry_velocity);
+  return m.lead_time_s + plan_segment(m.entry_velocity, 0.0, top, m.travel, limits).duration;
 }
 
 void PositioningAxes::start(const interp::PositioningMove& m, double start_s) {

@@ -7,6 +7,7 @@
 #include "motion/path_constraints.hpp"
 #include "motion/planner.hpp"
 #include "motion/positioning_axes.hpp"
+#include "interp/rest_to_rest.hpp"
 #include "planner_test_support.hpp"
 
 namespace drycut::motion::testing {
@@ -127,6 +128,30 @@ TEST(PlannerExtraAxes, PositioningMoveIsRestToRest) {
   EXPECT_NEAR(PositioningAxes::move_time(m), 2.0 * std::sqrt(1.0 / 600.0), 1e-12);
   m.lead_time_s = 0.25;
   EXPECT_NEAR(PositioningAxes::move_time(m), 0.25 + 2.0 * std::sqrt(1.0 / 600.0), 1e-12);
+}
+
+TEST(PlannerExtraAxes, SposFromRotationArrivesTurningAndBrakesOntoTheAngle) {
+  // Position control takes over at 3000 deg/s (500 rpm); braking at 10800 deg/s² covers
+  // 3000²/(2·10800) = 416.67 deg in 3000/10800 s. Half a turn beyond it: 180/3000 s at speed,
+  // then the braking: 0.06 + 0.277778 s. Both clocks (planner and interpreter) agree.
+  interp::PositioningMove m{"S1", 180.0 + 3000.0 * 3000.0 / (2.0 * 10800.0), 3000.0, 10800.0, 0.0, 0.25, true, 3000.0};
+  const double expected = 0.25 + 180.0 / 3000.0 + 3000.0 / 10800.0;
+  EXPECT_NEAR(PositioningAxes::move_time(m), expected, 1e-9);
+  EXPECT_NEAR(m.lead_time_s + interp::move_to_rest_s(m.travel, m.entry_velocity, m.velocity, m.accel, 0.0), expected, 1e-12);
+  // Exactly the braking distance: the braking alone.
+  m.travel = 3000.0 * 3000.0 / (2.0 * 10800.0);
+  EXPECT_NEAR(interp::move_to_rest_s(m.travel, 3000.0, 3000.0, 10800.0, 0.0), 3000.0 / 10800.0, 1e-12);
+  EXPECT_NEAR(PositioningAxes::move_time(m), 0.25 + 3000.0 / 10800.0, 1e-9);
+  // Entering slower than the cap with room to speed up: 600 -> 1200 deg/s at 600 deg/s² (1 s,
+  // 900 deg), braking 1200 deg in 2 s, 900 deg cruise 0.75 s over 3000 deg.
+  EXPECT_NEAR(interp::move_to_rest_s(3000.0, 600.0, 1200.0, 600.0, 0.0), 1.0 + 2.0 + 0.75, 1e-12);
+  interp::PositioningMove slow{"A", 3000.0, 1200.0, 600.0, 0.0, 0.0, true, 600.0};
+  EXPECT_NEAR(PositioningAxes::move_time(slow), 3.75, 1e-9);
+  // No room for the cap: peak u² = (2·600·1000 + 600²)/2 = 780000, (u - 600)/600 + u/600.
+  const double u = std::sqrt(780000.0);
+  EXPECT_NEAR(interp::move_to_rest_s(1000.0, 600.0, 1200.0, 600.0, 0.0), (u - 600.0) / 600.0 + u / 600.0, 1e-12);
+  slow.travel = 1000.0;
+  EXPECT_NEAR(PositioningAxes::move_time(slow), (u - 600.0) / 600.0 + u / 600.0, 1e-9);
 }
 
 TEST(PlannerExtraAxes, PosWaitsForTheLongerOfPathAndAxis) {
