@@ -49,13 +49,22 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   for (const AxisData& a : p.extra_axes) machine_axes.push_back(&a);
   for (size_t n = 0; n < machine_axes.size(); ++n) {
     const AxisData& a = *machine_axes[n];
+    // A rotary axis's data are in rev/min, rev/s², rev/s³ (degrees for positions), a linear
+    // axis's in mm/min, m/s², m/s³ (machine data lists, MD30300 IS_ROT_AX: the units of the
+    // axis-specific data); the profile holds deg/s and mm/s.
+    const double velocity_unit = a.rotary ? 60.0 / 360.0 : 60.0;
+    const double dynamics_unit = a.rotary ? 1.0 / 360.0 : 1.0 / 1000.0;
     for (const std::string& axis : {a.name + "1", a.name, "AX" + std::to_string(n + 1)}) {
-      md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * 60.0;        // MD32000
-      md["$MA_MAX_AX_ACCEL[" + axis + "]"] = a.max_accel_mm_s2 / 1000.0;       // MD32300
-      md["$MA_MAX_AX_JERK[" + axis + "]"] = a.max_jerk_mm_s3 / 1000.0;         // MD32431
-      md["$MA_MAX_ACCEL_OVL_FACTOR[" + axis + "]"] = p.max_accel_ovl_factor;   // MD32310
-      md["$MA_POS_LIMIT_PLUS[" + axis + "]"] = a.max_mm;                        // MD36110
-      md["$MA_POS_LIMIT_MINUS[" + axis + "]"] = a.min_mm;                       // MD36100
+      md["$MA_MAX_AX_VELO[" + axis + "]"] = a.max_velocity_mm_s * velocity_unit;  // MD32000
+      md["$MA_POS_AX_VELO[" + axis + "]"] = a.pos_velocity_mm_s * velocity_unit;  // MD32060
+      md["$MA_MAX_AX_ACCEL[" + axis + "]"] = a.max_accel_mm_s2 * dynamics_unit;   // MD32300
+      md["$MA_MAX_AX_JERK[" + axis + "]"] = a.max_jerk_mm_s3 * dynamics_unit;     // MD32431
+      md["$MA_MAX_ACCEL_OVL_FACTOR[" + axis + "]"] = p.max_accel_ovl_factor;      // MD32310
+      md["$MA_POS_LIMIT_PLUS[" + axis + "]"] = a.max_mm;                           // MD36110
+      md["$MA_POS_LIMIT_MINUS[" + axis + "]"] = a.min_mm;                          // MD36100
+      md["$MA_IS_ROT_AX[" + axis + "]"] = a.rotary ? 1 : 0;                        // MD30300
+      md["$MA_ROT_IS_MODULO[" + axis + "]"] = a.rotary && a.modulo ? 1 : 0;        // MD30310
+      if (a.rotary && a.modulo) md["$MA_MODULO_RANGE[" + axis + "]"] = a.modulo_range;  // MD30330
       md["$MA_COMPRESS_POS_TOL[" + axis + "]"] = a.compress_pos_tol_mm;         // MD33100
       // MD30600 FIX_POINT_POS[k] (G75 FP=k+1) and MD34100 REFP_SET_POS[0]: the profile's
       // fix_points_mm and reference_point_mm (where the profile gives none: the 990007 warning).
