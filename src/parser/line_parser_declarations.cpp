@@ -174,7 +174,15 @@ bool LineParser::parse_define(ParsedLine& out) {
   out.call_name = peek().text;
   const uint32_t text_column = peek(2).column;
   out.macro_text = line_.substr(std::min<size_t>(text_column - 1, line_.size()));
-  if (const size_t c = out.macro_text.find(';'); c != std::string_view::npos) out.macro_text = out.macro_text.substr(0, c);
+  // The comment starts at the first ';' outside a string: MSG("Tuer; zu") keeps its text.
+  bool in_string = false;
+  for (size_t c = 0; c < out.macro_text.size(); ++c) {
+    if (out.macro_text[c] == '"') in_string = !in_string;
+    if (out.macro_text[c] == ';' && !in_string) {
+      out.macro_text = out.macro_text.substr(0, c);
+      break;
+    }
+  }
   pos_ = tokens_.size() - 1;
   return true;
 }
