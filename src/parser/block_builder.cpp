@@ -458,9 +458,11 @@ class ProgramLoader::BlockBuilder {
     // the dry run does not know, the alarm is the dry run's guess, not the machine's state.
     if (const std::string input = l_.alarm_decided_by_unknown_input(static_cast<int>(n)); !input.empty()) {
       const bool measured = input.starts_with("$AA_M");
+      const bool by_action = input.ends_with("(written by a synchronized action)");
       l_.warn(990021, "SETAL(" + number_to_text(n) + ", \"" + text + "\") follows from " + input +
-                          (measured ? ", a measured value (a dry run touches nothing)"
-                                    : ", which the profile does not give (give it in machine_data to model the signal)"),
+                          (measured    ? ", a measured value (a dry run touches nothing)"
+                           : by_action ? ", which a dry run does not compute (synchronized actions are not run)"
+                                       : ", which the profile does not give (give it in machine_data to model the signal)"),
               item.column);
       return;
     }

@@ -208,6 +208,37 @@ bool LineParser::jump_direction(std::string_view word, JumpDirection& d) {
   return true;
 }
 
+// The variables a synchronized action writes: every `name =` and `name[literal, ...] =` after
+// its DO (and ELSE). The program reads them as values the action may have changed.
+void LineParser::collect_sync_targets(ParsedLine& out) const {
+  size_t i = 0;
+  while (i < tokens_.size() && !(tokens_[i].kind == TokenKind::Name && tokens_[i].text == "DO")) ++i;
+  for (++i; i + 1 < tokens_.size(); ++i) {
+    if (tokens_[i].kind != TokenKind::Name) continue;
+    if (tokens_[i + 1].kind == TokenKind::Assign) {
+      out.sync_targets.emplace_back(tokens_[i].text);
+      continue;
+    }
+    if (tokens_[i + 1].kind != TokenKind::LBracket) continue;
+    size_t j = i + 2;
+    bool literal = true;
+    std::string key(tokens_[i].text);
+    key += '[';
+    int depth = 0;  // brackets inside the index ($R[$AC_MARKER[1]])
+    for (; j < tokens_.size() && tokens_[j].kind != TokenKind::End; ++j) {
+      const TokenKind k = tokens_[j].kind;
+      if (k == TokenKind::RBracket && depth-- == 0) break;
+      if (k == TokenKind::LBracket) ++depth;
+      if (k == TokenKind::Comma) key += ',';
+      else if (k == TokenKind::Number) key += number_to_text(tokens_[j].number);
+      else literal = false;  // a computed index (or an axis): the whole variable
+    }
+    if (j + 1 < tokens_.size() && tokens_[j].kind == TokenKind::RBracket && tokens_[j + 1].kind == TokenKind::Assign)
+      out.sync_targets.push_back(literal ? key + ']' : std::string(tokens_[i].text));
+    i = j;
+  }
+}
+
 bool LineParser::parse_statement(ParsedLine& out) {
   const Token& t = peek();
   if (t.kind != TokenKind::Name) return false;
@@ -230,8 +261,10 @@ bool LineParser::parse_statement(ParsedLine& out) {
   if (w == "REPEAT" && peek(1).kind != TokenKind::End) return parse_repeat_section(out, false);
   if (w == "REPEATB") return parse_repeat_section(out, true);
   if (w == "WHEN" || w == "WHENEVER" || w == "FROM" || w == "EVERY" || w == "DO" ||
-      ((w == "ID" || w == "IDS") && peek(1).kind == TokenKind::Assign))
+      ((w == "ID" || w == "IDS") && peek(1).kind == TokenKind::Assign)) {
+    collect_sync_targets(out);
     return whole_line(Statement::SyncAction);
+  }
   if (w == "SETINT" || w == "ENABLE" || w == "DISABLE" || w == "CLRINT") return whole_line(Statement::Interrupt);
   if (w == "EXTERN") return parse_extern(out);
   if (w == "REDEF") {

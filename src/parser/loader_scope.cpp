@@ -100,6 +100,8 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
     return r.value;
   }
   if (const Variable* v = l.find_variable(name)) {
+    if (!l.sync_written_names_.empty() && l.sync_written_names_.count(name))
+      l.system_variables_.note_external_read(std::string(name) + " (written by a synchronized action)");
     if (is_character_access(*v, indices.size())) {
       const std::string text = v->get(v->element({}, column)).text;
       return Value::of_text(std::string(1, text[character_position(text, indices[0], column)]));
@@ -137,6 +139,27 @@ static std::optional<double> r_parameter_index(std::string_view name, std::span<
       std::all_of(name.begin() + 2, name.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::stod(std::string(name.substr(2)));
   return std::nullopt;
+}
+
+// A synchronized action's targets (ParsedLine::sync_targets): $Rn, $R[n] and Rn are R parameter
+// n; other $ names go to the system variables; the rest are user variables (GUD with SYNRW),
+// by name (an index does not narrow them).
+void ProgramLoader::note_sync_action_targets() {
+  for (const std::string& t : parsed_.sync_targets) {
+    const size_t bracket = t.find('[');
+    const std::string_view name = std::string_view(t).substr(0, bracket);
+    const bool r_form = name == "$R" || ((name.starts_with("$R") || name.starts_with("R")) && name.size() > 1 &&
+                                         all_digits(name.substr(name[0] == '$' ? 2 : 1)));
+    if (r_form) {
+      if (name != "$R") sync_written_r_.insert(std::stod(std::string(name.substr(name[0] == '$' ? 2 : 1))));
+      else if (bracket != std::string::npos) sync_written_r_.insert(std::stod(t.substr(bracket + 1)));
+      else sync_actions_writes_all_r_ = true;
+    } else if (name.starts_with("$")) {
+      system_variables_.note_sync_action_target(t);
+    } else {
+      sync_written_names_.emplace(name);
+    }
+  }
 }
 
 std::optional<Value> ProgramLoader::program_variable(std::string_view name, std::span<const Value> indices) const {
@@ -180,6 +203,9 @@ double ProgramLoader::Scope::r_parameter(double real_index, uint32_t column) con
   const double index = index_from_real(real_index);
   if (!(index >= 0 && index < static_cast<double>(kRParameterCount)))
     throw LineError(12430, column, "R parameter index must be 0..999");
+  if ((loader_.sync_actions_writes_all_r_ || !loader_.sync_written_r_.empty()) &&
+      (loader_.sync_actions_writes_all_r_ || loader_.sync_written_r_.count(index)))
+    loader_.system_variables_.note_external_read("R" + number_to_text(index) + " (written by a synchronized action)");
   return loader_.r_parameters_[static_cast<size_t>(index)];
 }
 

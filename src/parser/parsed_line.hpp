@@ -129,6 +129,9 @@ struct ParsedLine {
   bool proc_save = false;         // PROC ... SAVE
   ExprIndex passes = kNoExpr;     // REPEAT ... P=n
   std::string_view macro_text;    // DEFINE name AS <text> (as written)
+  // A synchronized action's assignment targets after DO/ELSE: "$R20", "$A_OUT[5]", "GUD_NOCKE";
+  // a name alone when its index is not a literal (all its elements).
+  std::vector<std::string> sync_targets;
   std::vector<CaseBranch> cases;  // CASE branches, DEFAULT last
   std::vector<Item> items;
   ExprPool pool;
@@ -152,6 +155,7 @@ struct ParsedLine {
     proc_save = false;
     passes = kNoExpr;
     macro_text = {};
+    sync_targets.clear();
     cases.clear();
     items.clear();
     pool.clear();

@@ -266,6 +266,7 @@ bool ProgramLoader::execute_line(Block& out) {
       case Statement::Interrupt:
         f.executed_block = true;
         sync_actions_seen_ = true;
+        note_sync_action_targets();
         warn_not_modelled(parsed_.statement == Statement::SyncAction ? "synchronized action (" + std::string(parsed_.call_name) + ")"
                                                                      : std::string(parsed_.call_name),
                           parsed_.statement_column);

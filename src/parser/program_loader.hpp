@@ -222,6 +222,12 @@ class ProgramLoader {
   bool program_global_data_ = false;  // MD11120 LUD_EXTENDED_SCOPE: main program variables are PUD
   SystemVariables system_variables_;
   bool sync_actions_seen_ = false;  // a synchronized action or interrupt was programmed ($Rn polls wait)
+  // What synchronized actions write (after DO): R parameters (any spelling), user variables by
+  // name. The program reads them as values the actions may have changed (note_sync_read).
+  std::set<double> sync_written_r_;
+  bool sync_actions_writes_all_r_ = false;  // $R[computed index]
+  std::set<std::string, std::less<>> sync_written_names_;
+  void note_sync_action_targets();
   std::map<std::string, std::string, std::less<>> macros_;  // DEFINE name AS text
   std::array<bool, 256> macro_initials_{};  // first letters of the macro names (both cases)
   std::string macro_initial_list_;           // the same letters, each once

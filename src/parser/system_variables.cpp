@@ -63,6 +63,8 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
   // $AC_MARKER, $AC_PARAM): the actions change them while the program polls them.
   const bool sync_action_variable = name == "$AC_MARKER" || name == "$AC_PARAM";
   if (sync_action_variable) note_external_read(key);
+  else if (!sync_targets_.empty() && (sync_targets_.count(key) || sync_targets_.count(name)))
+    note_external_read(key + " (written by a synchronized action)");
   if (name == "$AC_TIMER") {
     // Job Planning, "Timer variable $AC_TIMER[n]": counts seconds from the value written (>= 0)
     // until -1 stops it. Time is the interpreter's (poll_clock), so a timed warm-up loop ends.

@@ -140,11 +140,15 @@ class SystemVariables {
     ++input_reads_;
     last_input_ = what;
   }
+  // A synchronized action writes `key` ("$A_OUT[5]"; a name alone: all its elements): reads of
+  // it are such external reads.
+  void note_sync_action_target(const std::string& key) { sync_targets_.insert(key); }
 
  private:
   MachineDataMap values_;                                   // machine data, I/O (from the profile)
   MachineDataTexts text_values_;                            // machine data of type STRING (profile)
   MachineDataMap written_;                                  // numbers written by the program
+  std::set<std::string, std::less<>> sync_targets_;  // written by synchronized actions
   MachineDataMap timer_start_;  // running $AC_TIMER[n]: the elapsed time at which it read 0
   std::map<std::string, std::string, std::less<>> texts_;  // strings written by the program
   std::map<std::string, Value, std::less<>> frames_;        // frames written by the program

@@ -37,6 +37,19 @@ TEST(LineParser, BlockNumberSkipLabelAndWords) {
   EXPECT_DOUBLE_EQ(l.pool[l.items[4].expr].value, 1000.0);
 }
 
+TEST(LineParser, SynchronizedActionNamesWhatItWrites) {
+  // The condition's reads and comparisons are no targets; a computed index names the whole
+  // variable; targets after ELSE count too; the next line starts empty.
+  Parsed p;
+  const auto& l = p("ID=1 WHEN $AA_IM[X]>=50 DO $R20=1 $A_OUT[5]=1 GUD_NOCKE=$AA_IM[X] $R[$AC_MARKER[1]]=2 "
+                    "ARR[2,3]=1 ELSE $AC_MARKER[1]=$AC_MARKER[1]+1");
+  EXPECT_EQ(l.statement, Statement::SyncAction);
+  const std::vector<std::string> expected{"$R20", "$A_OUT[5]", "GUD_NOCKE", "$R", "ARR[2,3]", "$AC_MARKER[1]"};
+  EXPECT_EQ(l.sync_targets, expected);
+  EXPECT_TRUE(p("G1 X10").sync_targets.empty());
+  EXPECT_TRUE(p("WHENEVER $AA_IM[X]==$R1 DO M99").sync_targets.empty());
+}
+
 TEST(LineParser, MainBlockNumberAndPlainSkip) {
   Parsed p;
   const auto& l = p("/ :100 G0 Z5");
