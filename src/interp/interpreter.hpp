@@ -443,6 +443,10 @@ class Interpreter {
   void set_master_spindle(const BlockContext& ctx, const parser::CommandWord& c);
   // A swivel head's rotation of the tool (TCOABS/TCOFR with swivel_kinematics "head").
   Eigen::Matrix3d tool_orientation_ = Eigen::Matrix3d::Identity();
+  // SD42940 / SD42950 (profile, or written by the program): the plane whose length assignment
+  // holds (0: the selected one) and the tool type the lengths are assigned by (0: the tool's own).
+  int tool_length_const_ = profile_.tool_length_const;
+  int tool_length_type_ = profile_.tool_length_type;
   // A swivel (TCOABS/TCOFR in a rotated frame) on a machine whose part turns ("table") or whose
   // kinematics the profile lacks: the linear axes' positions depend on the table's pivot.
   bool part_swivelled_ = false;

@@ -21,10 +21,16 @@ Vector3d Interpreter::tool_length_vector() const {
   // length 1 along the ordinate, length 2 along the abscissa and length 3 along the normal (G18:
   // X, Z, Y); every other tool (milling, drilling) length 1 along the normal, length 2 along the
   // ordinate and length 3 along the abscissa (G17: Z, Y, X).
+  // SD42940 TOOL_LENGTH_CONST fixes the assignment to one plane's, SD42950 TOOL_LENGTH_TYPE
+  // assigns every tool as a milling (1) or turning (2) tool (Function Manual W1, "Tool length
+  // and plane change").
   const ToolOffsets& o = tools_.offsets();
-  const PlaneIndices plane = state_.plane_indices();
+  ModalState fixed;
+  fixed.plane = tool_length_const_ == 18 ? PlaneSelect::G18 : tool_length_const_ == 19 ? PlaneSelect::G19 : PlaneSelect::G17;
+  const PlaneIndices plane = tool_length_const_ != 0 ? fixed.plane_indices() : state_.plane_indices();
   Vector3d length = Vector3d::Zero();
-  if (o.type >= 400 && o.type <= 599) {
+  const bool turning_tool = tool_length_type_ == 2 || (tool_length_type_ == 0 && o.type >= 400 && o.type <= 599);
+  if (turning_tool) {
     length[plane.second] = o.length_mm;
     length[plane.first] = o.length2_mm;
     length[plane.normal] = o.length3_mm;

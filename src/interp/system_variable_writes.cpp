@@ -44,13 +44,17 @@ void Interpreter::apply_system_writes(const parser::Block& block) {
       continue;
     }
     if (write_frame_variable(block, w)) continue;
-    // SD42940/SD42950 assign the tool lengths to other axes than the plane's (a turning tool
-    // under G17 on a mill-turn): not modelled, so a value other than 0 is said once.
-    if ((w.name == "$SC_TOOL_LENGTH_CONST" || w.name == "$SC_TOOL_LENGTH_TYPE") && w.value.is_number() &&
-        w.value.number != 0 && warned_.insert(w.name).second) {
-      diagnostics_.warn(kNotModelled,
-                        w.name + " written: drycut keeps the lengths on the plane's axes by tool type (SD42940/SD42950 not modelled)",
-                        where, block.text);
+    // SD42940 / SD42950: where the tool lengths act from the next block on (tool_length_vector).
+    // Values drycut does not model (a negative SD42940, whose sign changes the turning tools'
+    // assignment) keep the last and are said once.
+    if ((w.name == "$SC_TOOL_LENGTH_CONST" || w.name == "$SC_TOOL_LENGTH_TYPE") && w.value.is_number()) {
+      const double v = w.value.number;
+      const bool length_const = w.name == "$SC_TOOL_LENGTH_CONST";
+      const bool known = length_const ? (v == 0 || v == 17 || v == 18 || v == 19) : (v == 0 || v == 1 || v == 2);
+      if (known) (length_const ? tool_length_const_ : tool_length_type_) = static_cast<int>(v);
+      else if (warned_.insert(w.name).second)
+        diagnostics_.warn(kNotModelled, w.name + " = " + parser::number_to_text(v) + " not modelled: the last value stays",
+                          where, block.text);
       continue;
     }
     // The override a synchronized action would set (Function Manual Synchronized Actions, $AC_OVR

@@ -30,6 +30,8 @@ std::map<std::string, double, std::less<>> machine_data_values(const MachineProf
   md["$MC_TOOL_CHANGE_MODE"] = p.tool_change_mode;                     // MD22550
   md["$MC_TOOL_CHANGE_M_CODE"] = p.tool_change_m_code;                 // MD22560
   md["$MC_CUTTING_EDGE_DEFAULT"] = p.cutting_edge_default;             // MD20270
+  md["$SC_TOOL_LENGTH_CONST"] = p.tool_length_const;                   // SD42940
+  md["$SC_TOOL_LENGTH_TYPE"] = p.tool_length_type;                     // SD42950
   md["$MA_SPIND_VELO_LIMIT[SP1]"] = p.max_spindle_speed_rpm;           // MD35100
   md["$MC_COMPRESS_BLOCK_PATH_LIMIT"] = p.compressor.block_path_limit_mm;  // MD20170
   md["$MC_COMPRESS_VELO_TOL"] = p.compressor.velo_tol_mm_s * 60.0;         // MD20172 (mm/min)

@@ -103,6 +103,15 @@ void read_tool_change_data(ProfileObjectReader& r, MachineProfile& p) {
     p.cutting_edge_default = static_cast<int>(*v);
   }
   if (auto v = r.boolean("tool_table_complete")) p.tool_table_complete = *v;
+  if (auto v = r.integer("tool_length_const")) {
+    if (*v != 0 && *v != 17 && *v != 18 && *v != 19)
+      r.fail("tool_length_const", "must be 0 (lengths follow the plane) or 17, 18, 19 (SD42940)");
+    p.tool_length_const = static_cast<int>(*v);
+  }
+  if (auto v = r.integer("tool_length_type")) {
+    if (*v < 0 || *v > 2) r.fail("tool_length_type", "must be 0 (by tool type), 1 (as milling tools) or 2 (as turning tools) (SD42950)");
+    p.tool_length_type = static_cast<int>(*v);
+  }
   if (auto v = r.string("swivel_kinematics")) {
     if (*v != "none" && *v != "table" && *v != "head")
       r.fail("swivel_kinematics", "must be \"none\", \"table\" or \"head\" ($TC_CARR23 T/P)");
@@ -342,6 +351,8 @@ std::string profile_to_json(const MachineProfile& p) {
                      {"tool_change_m_code", p.tool_change_m_code},
                      {"cutting_edge_default", p.cutting_edge_default},
                      {"tool_table_complete", p.tool_table_complete},
+                     {"tool_length_const", p.tool_length_const},
+                     {"tool_length_type", p.tool_length_type},
                      {"swivel_kinematics", p.swivel_kinematics},
                      {"diameter_ax_def", p.diameter_axis},
                      {"base_unit", p.base_unit_inch ? "inch" : "mm"}};

@@ -146,6 +146,8 @@ struct MachineProfile {
   int tool_change_mode = 1;                     // MD22550 TOOL_CHANGE_MODE: 1 = T prepares, M6 changes; 0 = T changes
   int tool_change_m_code = 6;                   // MD22560 TOOL_CHANGE_M_CODE
   int cutting_edge_default = 1;                 // MD20270 CUTTING_EDGE_DEFAULT (0, n, -1, -2)
+  int tool_length_const = 0;  // SD42940 TOOL_LENGTH_CONST: 0 lengths follow the plane, 17/18/19 fixed to that plane's
+  int tool_length_type = 0;   // SD42950 TOOL_LENGTH_TYPE: 0 by tool type, 1 every tool as a milling tool, 2 as a turning tool
   bool tool_table_complete = false;             // a T/D missing from the table is an alarm (17190/17180), else a warning
   Eigen::Vector3d start_position = Eigen::Vector3d::Zero();  // in the work coordinate system of the first offset
   double circle_error_const_mm = 0.01;          // MD21000 CIRCLE_ERROR_CONST

@@ -10,7 +10,7 @@ namespace {
 
 // Last key component (without unit) -> datum; axis keys and others share one table because the
 // component names never collide. docs/machine-profile.md is the reference for every row.
-constexpr std::array<std::pair<std::string_view, std::string_view>, 68> kNames{{
+constexpr std::array<std::pair<std::string_view, std::string_view>, 70> kNames{{
     {"min", "MD36100 POS_LIMIT_MINUS"},
     {"max", "MD36110 POS_LIMIT_PLUS"},
     {"max_velocity", "MD32000 MAX_AX_VELO"},
@@ -57,6 +57,8 @@ constexpr std::array<std::pair<std::string_view, std::string_view>, 68> kNames{{
     {"tool_change_m_code", "MD22560 TOOL_CHANGE_M_CODE"},
     {"cutting_edge_default", "MD20270 CUTTING_EDGE_DEFAULT"},
     {"tool_table_complete", "- (drycut)"},
+    {"tool_length_const", "SD42940 TOOL_LENGTH_CONST"},
+    {"tool_length_type", "SD42950 TOOL_LENGTH_TYPE"},
     {"swivel_kinematics", "$TC_CARR23"},
     {"diameter_ax_def", "MD20100 DIAMETER_AX_DEF"},
     {"base_unit", "MD10240 SCALING_SYSTEM_IS_METRIC"},
