@@ -56,6 +56,7 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
       t.accel = t.raw_accel * accel_factor;
       t.jerk = axis.max_jerk_mm_s3 * group.max_ax_jerk * jerk_factor;
       t.transition_jerk = axis.transition_jerk_mm_s3 * group.path_trans_jerk_lim * jerk_factor;
+      t.compress_tol = axis.compress_pos_tol_mm;
       d.extra.push_back(t);
     }
   }

@@ -24,6 +24,7 @@ struct ExtraAxisTerm {
   double jerk = 0;                // usable jerk in this mode
   double raw_accel = 0;           // MAX_AX_ACCEL (overload rule)
   double transition_jerk = 0;     // PATH_TRANS_JERK_LIM
+  double compress_tol = 0.1;      // MD33100 COMPRESS_POS_TOL: how far a compressor's fit may leave the axis's course
 };
 
 struct ElementDynamics {

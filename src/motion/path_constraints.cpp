@@ -37,24 +37,23 @@ void for_each_extra_jump(const Junction& j, F&& f) {
 // Inside one run of the compressor (both sides its output, the geometry tangent-continuous) the
 // control compresses the extra axes with the geometry (COMPCAD/COMPCURV polynomials; Job Planning,
 // "Compression of the orientation"): their rate d(axis)/ds does not jump at the join but changes
-// along the spans. drycut keeps them linear per span, so the change is taken as spread over the
-// half spans either side, L = (L_before + L_after)/2: axis acceleration v²·Δ/L, jerk v³·Δ/L²
-// (before 2026-11-28 the jump rules braked a 5-axis stream at every join). Only a gradual change
-// (Δ at most half the larger rate, kMaxSmoothedRateChange): a span averages the rate of the blocks
-// it replaces, so a sudden turn inside a run (8 deg/mm among 0.2 deg/mm blocks) keeps the jump
-// rules, which hold the axis back as the averaged span cannot (drycut's assumption).
-constexpr double kMaxSmoothedRateChange = 0.5;
+// along the spans. drycut keeps them linear per span, so the change Δ is taken as spread over a
+// length L: axis acceleration v²·Δ/L, jerk v³·Δ/L² (before 2026-11-28 the jump rules braked a
+// 5-axis stream at every join). L is at most the half spans either side, (L_before + L_after)/2,
+// and at most 8·tol/Δ: a change rounded over L leaves the kinked course by Δ·L/8 at the join (a
+// parabola's blend), which the fit must keep within the axis's MD33100 tolerance. A smooth
+// course (the swing-door cut its spans at that tolerance) gets about its span lengths; a sudden
+// turn (8 deg/mm among 0.2 deg/mm blocks) a short L, so the axis is held back there. Until
+// 2026-11-29 a change above half the larger rate kept the jump rules instead, which braked to a
+// few mm/min where a rotary axis turns round (its rate changes sign) or starts from rest.
 bool extra_axes_smoothed(const Junction& j) {
   return j.before.compressed_blocks > 0 && j.after.compressed_blocks > 0 &&
          (j.after_start.tangent - j.before_end.tangent).norm() < 1e-6;
 }
 
-bool gradual(double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-  return dt <= kMaxSmoothedRateChange * std::max(std::abs(before.tangent), std::abs(after.tangent));
-}
-
-double smoothing_length(const Junction& j) {
-  return 0.5 * (j.before_dynamics.length + j.after_dynamics.length);
+double smoothing_length(const Junction& j, double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
+  const double tolerance = std::min(before.compress_tol, after.compress_tol);
+  return std::min(0.5 * (j.before_dynamics.length + j.after_dynamics.length), 8.0 * tolerance / dt);
 }
 
 }  // namespace
@@ -117,10 +116,9 @@ double CornerConstraint::max_velocity(const Junction& j) const {
   double v = kInf;
   const double ovl = std::min(j.before_dynamics.ovl_factor, j.after_dynamics.ovl_factor) - 1.0;
   const bool smoothed = extra_axes_smoothed(j);
-  const double l = smoothed ? smoothing_length(j) : 0.0;
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-    if (smoothed && gradual(dt, before, after))
-      v = std::min(v, std::sqrt(std::min(before.accel, after.accel) * l / dt));
+    if (smoothed)
+      v = std::min(v, std::sqrt(std::min(before.accel, after.accel) * smoothing_length(j, dt, before, after) / dt));
     else
       v = std::min(v, std::min(before.raw_accel, after.raw_accel) * ovl * j.after_dynamics.ipo_cycle / dt);
   });
@@ -142,9 +140,9 @@ double TransitionJerkConstraint::max_velocity(const Junction& j) const {
   const double t = j.after_dynamics.ipo_cycle;
   double v = kInf;
   const bool smoothed = extra_axes_smoothed(j);
-  const double l = smoothed ? smoothing_length(j) : 0.0;
   for_each_extra_jump(j, [&](double dt, const ExtraAxisTerm& before, const ExtraAxisTerm& after) {
-    if (smoothed && gradual(dt, before, after))
+    const double l = smoothed ? smoothing_length(j, dt, before, after) : 0.0;
+    if (smoothed)
       v = std::min(v, cube_root(std::min(before.jerk, after.jerk) * l * l / dt));
     else
       v = std::min(v, std::min(before.transition_jerk, after.transition_jerk) * t * t / dt);

@@ -91,10 +91,10 @@ interp::PathElement positioning(double travel, bool synchronous, int line_no) {
 TEST(PlannerExtraAxes, CompressedRunSpreadsTheRotaryRateChangeOverItsSpans) {
   // Two tangent-continuous compressor spans of 10 and 20 mm; A's rate d(A)/ds goes 0.5 -> 1.0
   // deg/mm (Δ = 0.5). Inside a compressed run the control's polynomial spreads that change over
-  // L = (10 + 20)/2 = 15 mm: acceleration v²·Δ/L <= 600 gives v <= sqrt(600·15/0.5) = 94.87 mm/s,
-  // jerk v³·Δ/L² <= 6000 gives v <= cbrt(6000·15²/0.5) = 139.25 mm/s. Not compressed, the jump
-  // rules hold: overload 600·(1.2 - 1)·0.004/0.5 = 0.96 mm/s, transition jerk
-  // 6000·0.004²/0.5 = 0.192 mm/s.
+  // L = (10 + 20)/2 = 15 mm when A's tolerance allows it (8·tol/Δ >= 15: tol 1 deg):
+  // acceleration v²·Δ/L <= 600 gives v <= sqrt(600·15/0.5) = 94.87 mm/s, jerk v³·Δ/L² <= 6000
+  // gives v <= cbrt(6000·15²/0.5) = 139.25 mm/s. Not compressed, the jump rules hold: overload
+  // 600·(1.2 - 1)·0.004/0.5 = 0.96 mm/s, transition jerk 6000·0.004²/0.5 = 0.192 mm/s.
   interp::PathElement before = line(O, Vec3(10, 0, 0), 600, {}, 1);
   interp::PathElement after = line(Vec3(10, 0, 0), Vec3(30, 0, 0), 600, {}, 2);
   before.compressed_blocks = after.compressed_blocks = 3;
@@ -106,12 +106,21 @@ TEST(PlannerExtraAxes, CompressedRunSpreadsTheRotaryRateChangeOverItsSpans) {
   }
   db.length = 10;
   da.length = 20;
-  db.extra = {ExtraAxisTerm{0, 0.5, 60, 600, 6000, 600, 6000}};
-  da.extra = {ExtraAxisTerm{0, 1.0, 60, 600, 6000, 600, 6000}};
+  db.extra = {ExtraAxisTerm{0, 0.5, 60, 600, 6000, 600, 6000, 1.0}};
+  da.extra = {ExtraAxisTerm{0, 1.0, 60, 600, 6000, 600, 6000, 1.0}};
   CurvePoint end_of_before, start_of_after;  // both along +X
   const Junction j{before, db, end_of_before, after, da, start_of_after};
   EXPECT_NEAR(CornerConstraint().max_velocity(j), std::sqrt(600.0 * 15.0 / 0.5), 1e-9);
   EXPECT_NEAR(TransitionJerkConstraint().max_velocity(j), std::cbrt(6000.0 * 15.0 * 15.0 / 0.5), 1e-6);
+  // With MD33100 = 0.1 deg the fit may round the change over 8·0.1/0.5 = 1.6 mm only (a parabola
+  // over L leaves the kinked course by Δ·L/8): v <= sqrt(600·1.6/0.5), cbrt(6000·1.6²/0.5).
+  db.extra[0].compress_tol = da.extra[0].compress_tol = 0.1;
+  EXPECT_NEAR(CornerConstraint().max_velocity(j), std::sqrt(600.0 * 1.6 / 0.5), 1e-9);
+  EXPECT_NEAR(TransitionJerkConstraint().max_velocity(j), std::cbrt(6000.0 * 1.6 * 1.6 / 0.5), 1e-6);
+  // A rotary axis turning round (rate +0.5 -> -0.5, Δ = 1) is spread too, not a velocity jump.
+  da.extra[0].tangent = -0.5;
+  EXPECT_NEAR(CornerConstraint().max_velocity(j), std::sqrt(600.0 * 0.8 / 1.0), 1e-9);
+  da.extra[0].tangent = 1.0;
   before.compressed_blocks = 0;
   EXPECT_NEAR(CornerConstraint().max_velocity(j), 600.0 * 0.2 * 0.004 / 0.5, 1e-12);
   EXPECT_NEAR(TransitionJerkConstraint().max_velocity(j), 6000.0 * 0.004 * 0.004 / 0.5, 1e-12);
