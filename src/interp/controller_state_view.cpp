@@ -64,6 +64,7 @@ std::optional<Value> InterpreterStateView::tool_presence(std::string_view n, std
   // $P_TOOLEXIST[t]: is tool t in the tool table; $TC_TP2[t]: its name (empty when none).
   if (n == "$P_TOOLEXIST") return Value(tool ? 1.0 : 0.0);
   if (n == "$TC_TP2") return Value::of_text(tool ? tool->name : std::string());
+  if (n == "$TC_TP1") return Value(tool ? static_cast<double>(tool->duplo) : 0.0);  // duplo number
   return std::nullopt;
 }
 
@@ -213,9 +214,12 @@ std::optional<Value> InterpreterStateView::tool_variable(std::string_view n, std
     for (char c : n.substr(6)) k = std::isdigit(static_cast<unsigned char>(c)) && k < 100 ? k * 10 + (c - '0') : 1000;
     if ((k >= 1 && k <= 6) || (k >= 12 && k <= 15) || (k >= 21 && k <= 23)) return number(tool_datum(k, indices));
   }
-  if (n == "$TC_GETT" && indices.size() == 1) {
-    if (const machine::Tool* t = tools.find(indices[0].text)) return Value(static_cast<double>(t->number));
-    return Value(-1.0);
+  if (n == "$TC_GETT" && (indices.size() == 1 || indices.size() == 2)) {
+    const double duplo = indices.size() == 2 && indices[1].is_number() ? indices[1].number : 0.0;
+    const machine::Tool* t = duplo == 0                     ? tools.find(indices[0].text)
+                             : duplo >= 1 && duplo <= 32000 ? tools.find_sister(indices[0].text, static_cast<int>(duplo))
+                                                            : nullptr;
+    return Value(t ? static_cast<double>(t->number) : -1.0);
   }
   return std::nullopt;
 }

@@ -28,13 +28,17 @@ ToolState::ToolState(const machine::MachineProfile& profile)
       table_complete_(profile.tool_table_complete) {}
 
 const machine::Tool* ToolState::find(const std::string& id) const {
-  // T="name" selects by name (case-sensitive), T<n> by number (kept as its decimal text).
-  for (const auto& t : table_)
-    if (t.name == id) return &t;
+  // T="name" selects by name (case-sensitive; of sister tools the lowest duplo number), T<n> by
+  // number (kept as its decimal text).
+  if (const machine::Tool* t = find_sister(id, 0)) return t;
   if (auto n = tool_number(id))
     for (const auto& t : table_)
       if (t.number == *n) return &t;
   return nullptr;
+}
+
+const machine::Tool* ToolState::find_sister(const std::string& name, int duplo) const {
+  return machine::find_sister_tool(table_, name, duplo);
 }
 
 bool ToolState::same_tool(const std::string& a, const std::string& b) const {

@@ -85,6 +85,8 @@ class ToolState {
   bool has_tool() const { return active_ && *active_ != "0"; }
   // The run's tool table entry for "5" (T5) or a name; nullptr when absent.
   const machine::Tool* find(const std::string& id) const;
+  // Sister tool `duplo` of a name ($TC_TP1; 0: the lowest duplo number).
+  const machine::Tool* find_sister(const std::string& name, int duplo) const;
   // Whether two selections name one tool: the same text, or T<n> and T="name" of one table entry.
   bool same_tool(const std::string& a, const std::string& b) const;
 

@@ -571,7 +571,7 @@ class Importer {
       // These stay readable as machine data too ($TC_DP1 in a tool macro).
       if (!other) slot.used = true;
     }
-    std::set<std::string> names;
+    std::set<std::string> names;  // name and duplo number
     for (const auto& [t, edges] : tools) {
       Tool tool;
       tool.number = t;
@@ -579,7 +579,13 @@ class Importer {
       tool.name = text_of("$TC_TP2[" + std::to_string(t) + "]").value_or(std::to_string(t));
       if (const MachineDatum* n = peek("$TC_TP2[" + std::to_string(t) + "]"))
         out_.sources[tool_key + "name"] = {written_name(*n), n->location()};
-      if (!names.insert(tool.name).second) {
+      // $TC_TP1[t]: the duplo number of sister tools (same name); without it each name once.
+      if (const auto duplo = number_of("$TC_TP1[" + std::to_string(t) + "]"); duplo && *duplo >= 1 && *duplo <= 32000) {
+        tool.duplo = static_cast<int>(*duplo);
+        if (const MachineDatum* d = peek("$TC_TP1[" + std::to_string(t) + "]"))
+          out_.sources[tool_key + "duplo"] = {written_name(*d), d->location()};
+      }
+      if (!names.insert(tool.name + '\n' + std::to_string(tool.duplo)).second) {
         out_.notes.push_back("tool " + std::to_string(t) + ": name '" + tool.name + "' used twice, named '" +
                              tool.name + "_T" + std::to_string(t) + "' in the profile");
         tool.name += "_T" + std::to_string(t);

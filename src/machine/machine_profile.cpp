@@ -229,8 +229,17 @@ void read_tools(const json& node, MachineProfile& p) {
       for (size_t k = 0; k < edges->size(); ++k)
         t.edges.push_back(read_edge((*edges)[k], r.key_path("edges") + "[" + std::to_string(k) + "]"));
     }
+    // Sister tools share the name with their own duplo numbers ($TC_TP1); without "duplo" the
+    // next free one.
+    t.duplo = p.next_duplo(t.name);
+    if (auto duplo = r.integer("duplo")) {
+      if (*duplo < 1 || *duplo > 32000) r.fail("duplo", "must be in [1, 32000]");
+      t.duplo = static_cast<int>(*duplo);
+    }
     r.reject_unknown_keys();
-    if (p.find_tool(t.name)) r.fail("name", "tool '" + t.name + "' defined twice");
+    if (p.find_tool(t.name, t.duplo))
+      r.fail("name", "tool '" + t.name + "' duplo " + std::to_string(t.duplo) + " defined twice");
+    if (p.find_tool(t.number)) r.fail("number", "tool number " + std::to_string(t.number) + " defined twice");
     p.tools.push_back(std::move(t));
   }
 }
@@ -370,7 +379,9 @@ std::string profile_to_json(const MachineProfile& p) {
       if (e.edge_position != 0) edge["cutting_edge_position"] = e.edge_position;
       edges.push_back(edge);
     }
-    tools.push_back({{"name", t.name}, {"number", t.number}, {"edges", edges}});
+    json tool{{"name", t.name}, {"number", t.number}, {"edges", edges}};
+    if (t.duplo != 1) tool["duplo"] = t.duplo;
+    tools.push_back(tool);
   }
   root["compressor"] = compressor_to_json(p);
   root["smoothing"] = smoothing_to_json(p);

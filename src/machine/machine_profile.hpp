@@ -2,6 +2,7 @@
 // Machine data: everything a machine builder sets on the real control, as one profile shared by
 // all programs of a machine. Units inside: mm, s, rad. The JSON form carries units in its keys
 // (docs/machine-profile.md documents every field and why the default has its value).
+#include <algorithm>
 #include <array>
 #include <map>
 #include <optional>
@@ -95,7 +96,17 @@ struct Tool {
   std::string name;        // T="name" (case-sensitive)
   int number = 0;          // T<n>
   std::vector<ToolEdge> edges;
+  int duplo = 1;           // $TC_TP1 duplo number: sister tools share the name, each its own duplo
 };
+
+// By name: the sister tool of the lowest duplo number (drycut's choice of the tool management's
+// strategy: a dry run knows no wear or lock); duplo > 0: that sister tool only.
+inline const Tool* find_sister_tool(const std::vector<Tool>& tools, const std::string& name, int duplo = 0) {
+  const Tool* found = nullptr;
+  for (const auto& t : tools)
+    if (t.name == name && (duplo > 0 ? t.duplo == duplo : !found || t.duplo < found->duplo)) found = &t;
+  return found;
+}
 
 struct MachineProfile {
   std::string name;
@@ -174,10 +185,13 @@ struct MachineProfile {
     return -1;
   }
 
-  const Tool* find_tool(const std::string& name) const {
+  const Tool* find_tool(const std::string& name, int duplo = 0) const { return find_sister_tool(tools, name, duplo); }
+  // The next free duplo number of a name (1 for a new name): sister tools listed without one.
+  int next_duplo(const std::string& name) const {
+    int d = 0;
     for (const auto& t : tools)
-      if (t.name == name) return &t;
-    return nullptr;
+      if (t.name == name) d = std::max(d, t.duplo);
+    return d + 1;
   }
   const Tool* find_tool(int number) const {
     for (const auto& t : tools)

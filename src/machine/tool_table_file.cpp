@@ -47,7 +47,7 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
                                                  "length_mm",       "radius_mm",      "teeth",
                                                  "type",            "length2_mm",     "length3_mm",
                                                  "base_length1_mm", "base_length2_mm", "base_length3_mm",
-                                                 "cutting_edge_position"};
+                                                 "cutting_edge_position", "duplo"};
   std::istringstream in(text);
   std::string line;
   std::map<std::string, size_t> column;
@@ -62,7 +62,7 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
         if (std::find(kColumns.begin(), kColumns.end(), cells[i]) == kColumns.end())
           throw ProfileError(where + ": unknown column '" + cells[i] +
                              "' (columns: number,name,d,length_mm,radius_mm,teeth,type,length2_mm,length3_mm,"
-                             "base_length1_mm,base_length2_mm,base_length3_mm,cutting_edge_position)");
+                             "base_length1_mm,base_length2_mm,base_length3_mm,cutting_edge_position,duplo)");
         column[cells[i]] = i;
       }
       if (!column.count("number") || !column.count("d")) throw ProfileError(where + ": the header needs columns number and d");
@@ -91,12 +91,20 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
     const std::string name = cell("name").empty() ? std::to_string(number) : cell("name");
     auto it = std::find_if(tools.begin(), tools.end(), [&](const Tool& t) { return t.number == number; });
     if (it == tools.end()) {
-      if (std::any_of(tools.begin(), tools.end(), [&](const Tool& t) { return t.name == name; }))
-        throw ProfileError(where + ": tool name '" + name + "' used by two numbers");
-      tools.push_back({name, number, {}});
+      // A name under another number is a sister tool: its duplo number from the column, else the
+      // next free one ($TC_TP1).
+      int duplo = 1;
+      for (const Tool& t : tools)
+        if (t.name == name) duplo = std::max(duplo, t.duplo + 1);
+      if (!cell("duplo").empty()) duplo = integer_cell(cell("duplo"), 1, 32000, where + " duplo");
+      if (std::any_of(tools.begin(), tools.end(), [&](const Tool& t) { return t.name == name && t.duplo == duplo; }))
+        throw ProfileError(where + ": tool name '" + name + "' duplo " + std::to_string(duplo) + " used by two numbers");
+      tools.push_back({name, number, {}, duplo});
       it = tools.end() - 1;
     } else if (it->name != name) {
       throw ProfileError(where + ": tool " + std::to_string(number) + " named '" + it->name + "' before");
+    } else if (!cell("duplo").empty() && integer_cell(cell("duplo"), 1, 32000, where + " duplo") != it->duplo) {
+      throw ProfileError(where + ": tool " + std::to_string(number) + " has duplo " + std::to_string(it->duplo) + " before");
     }
     for (const auto& e : it->edges)
       if (e.d == edge.d) throw ProfileError(where + ": tool " + std::to_string(number) + " edge D" + std::to_string(edge.d) + " twice");

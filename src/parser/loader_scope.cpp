@@ -308,9 +308,12 @@ Value ProgramLoader::Scope::nametoint_value(const ExprNode& call, std::span<cons
 }
 
 Value ProgramLoader::Scope::gett_value(const ExprNode& call, std::span<const Value> args) const {
+  // GETT(name[, duplo]) (Function Manual Tool Management, "GETT"): the T number of the name's
+  // sister tool with that duplo number, -1 when there is none.
   if (args.empty() || args[0].is_number()) throw LineError(12150, call.column, "GETT needs a tool name");
-  const Value key = Value::of_text(args[0].text);
-  const auto r = loader_.system_variables_.read("$TC_GETT", std::span<const Value>(&key, 1));
+  if (args.size() > 1 && !args[1].is_number()) throw LineError(12150, call.column, "GETT: the duplo number must be a number");
+  const Value key[2] = {Value::of_text(args[0].text), args.size() > 1 ? args[1] : Value(0.0)};
+  const auto r = loader_.system_variables_.read("$TC_GETT", std::span<const Value>(key, args.size() > 1 ? 2 : 1));
   if (r.assumed)
     loader_.warn(990007, "GETT(\"" + args[0].text + "\"): tool table not available, -1 assumed", call.column);
   return r.assumed ? Value(-1.0) : r.value;

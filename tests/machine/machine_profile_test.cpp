@@ -263,7 +263,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"/tools/0/edges/1/d", "<erase>", "tools[0].edges[1].d: missing"},
         BadCase{"/tools/0/name", "\"\"", "tools[0].name: missing or empty"},
         BadCase{"/tools/0/number", "-1", "tools[0].number: must be in [0, 32000]"},
-        BadCase{"/tools/1", "{\"name\": \"T_A\", \"number\": 4}", "tools[1].name: tool 'T_A' defined twice"},
+        BadCase{"/tools/1", "{\"name\": \"T_A\", \"number\": 4, \"duplo\": 1}", "tools[1].name: tool 'T_A' duplo 1 defined twice"},
+        BadCase{"/tools/1", "{\"name\": \"T_B\", \"number\": 3}", "tools[1].number: tool number 3 defined twice"},
+        BadCase{"/tools/1", "{\"name\": \"T_A\", \"number\": 4, \"duplo\": 0}", "tools[1].duplo: must be in [1, 32000]"},
         BadCase{"/spindle", "{}", "spindle: unknown key"}));
 
 TEST(LoadProfile, InvalidJsonIsAProfileError) {

@@ -63,6 +63,33 @@ TEST(ToolTableCsv, ColumnsMayComeInAnyOrder) {
   EXPECT_DOUBLE_EQ(tools[0].edges[0].radius_mm, 3.0);
 }
 
+TEST(ToolTableCsv, SisterToolsShareANameWithTheirDuploNumbers) {
+  // A name under two numbers is a pair of sister tools ($TC_TP1): duplo from the column, else the
+  // next free one; a name's duplo twice is an error, as is a tool's duplo changing between rows.
+  const auto tools = load_tool_table_csv(
+      "number,name,d,length_mm,radius_mm,duplo\n4,FR_D10,1,80,5,\n14,FR_D10,1,81,5,\n24,FR_D10,1,79,5,7\n24,FR_D10,2,79,5,7\n",
+      "t.csv");
+  ASSERT_EQ(tools.size(), 3u);
+  EXPECT_EQ(tools[0].duplo, 1);
+  EXPECT_EQ(tools[1].duplo, 2);
+  EXPECT_EQ(tools[2].duplo, 7);
+  EXPECT_EQ(tools[2].edges.size(), 2u);
+  EXPECT_EQ(find_sister_tool(tools, "FR_D10")->number, 4);
+  EXPECT_EQ(find_sister_tool(tools, "FR_D10", 7)->number, 24);
+  EXPECT_EQ(find_sister_tool(tools, "FR_D10", 3), nullptr);
+  auto message = [](const std::string& text) {
+    try {
+      load_tool_table_csv(text, "t.csv");
+    } catch (const ProfileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("number,name,d,duplo\n1,A,1,1\n2,A,1,1\n").find("t.csv:3: tool name 'A' duplo 1 used by two numbers"),
+            std::string::npos);
+  EXPECT_NE(message("number,name,d,duplo\n1,A,1,1\n1,A,2,2\n").find("has duplo 1 before"), std::string::npos);
+}
+
 TEST(ToolTableCsv, BadInputNamesFileAndLine) {
   auto message = [](const std::string& text) {
     try {
