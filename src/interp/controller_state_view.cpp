@@ -190,12 +190,14 @@ std::optional<Value> InterpreterStateView::tool_variable(std::string_view n, std
   auto number = [](std::optional<double> v) { return v ? std::optional<Value>(Value(*v)) : std::nullopt; };
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
-  if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm);
+  // Radius and lengths in the unit of tool data: inch under G700 (a cycle's $P_TOOLR+1 is an inch).
+  const double unit = interpreter_.tool_data_unit();
+  if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm / unit);
   if (n == "$P_TOOLL") {
     // $P_TOOLL[1..3]: the active edge's lengths 1, 2, 3 (geometry + wear + base); no index: length 1.
     const double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 1.0;
     const ToolOffsets& o = tools.offsets();
-    return Value(k == 1 ? o.length_mm : k == 2 ? o.length2_mm : k == 3 ? o.length3_mm : 0.0);
+    return Value((k == 1 ? o.length_mm : k == 2 ? o.length2_mm : k == 3 ? o.length3_mm : 0.0) / unit);
   }
   if (n == "$P_TOOLNO" || n == "$AC_TOOLNO") return Value(tool_number(tools, tools.active_tool()));
   if (n == "$P_TOOLP") return Value(tool_number(tools, tools.programmed_tool()));

@@ -103,6 +103,9 @@ class Interpreter {
   double extra_axis_actual_position(size_t i) const;
   // The contour of the last DRYCUT_CONTOUR_BEGIN ... END ($DRYCUT_CONTOUR, contour_recording.hpp).
   const ContourRecorder& recorded_contour() const { return recorder_; }
+  // mm per unit of the tool data a program reads ($P_TOOLR, $P_TOOLL): the programmed unit under
+  // G700/G710, the base system (MD10240) under G70/G71, as F (Fundamentals, G70/G700 table).
+  double tool_data_unit() const { return feed_unit(); }
 
  private:
   struct BlockContext;
