@@ -58,8 +58,11 @@ void Interpreter::attach_cutting_speed_law(BlockContext& ctx, PathElement& e) {
   // from 200 to 900 rev/min on a face). The block keeps the one feed that gives it its true time;
   // the law lets the last stage before the planner give the feed its course as well, on the
   // element as chamfers, roundings and the tool radius compensation have left it.
-  if (e.rapid || !state_.constant_cutting_speed || state_.feed_mode != FeedMode::PerRevolution ||
-      state_.motion != MotionMode::Linear || state_.thread_mode() || !e.extra_axes.empty() || recorder_.active())
+  const bool line_or_arc = state_.motion == MotionMode::Linear || state_.motion == MotionMode::ArcCw ||
+                           state_.motion == MotionMode::ArcCcw || state_.motion == MotionMode::ArcThroughPoint ||
+                           state_.motion == MotionMode::ArcTangent;
+  if (e.rapid || !state_.constant_cutting_speed || state_.feed_mode != FeedMode::PerRevolution || !line_or_arc ||
+      !e.extra_axes.empty() || recorder_.active())
     return;
   // x(p) = to_inner(p - length)[axis] is affine in p: its offset and its gradient.
   const Frame& frame = block_frame(ctx);
