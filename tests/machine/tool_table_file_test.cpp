@@ -9,6 +9,16 @@
 namespace drycut::machine {
 namespace {
 
+// The error a CSV table gives, or "no error".
+std::string csv_error(const std::string& text) {
+  try {
+    load_tool_table_csv(text, "t.csv");
+  } catch (const ProfileError& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
 TEST(ToolTableCsv, OneRowPerEdgeMergedByNumber) {
   const auto tools = load_tool_table_csv(
       "# job 42\nnumber,name,d,length_mm,radius_mm\n1,FR_4,1,75.5,2\n\n1,FR_4,2,80,2.5\n7,,1,120,\n", "t.csv");
@@ -77,35 +87,19 @@ TEST(ToolTableCsv, SisterToolsShareANameWithTheirDuploNumbers) {
   EXPECT_EQ(find_sister_tool(tools, "FR_D10")->number, 4);
   EXPECT_EQ(find_sister_tool(tools, "FR_D10", 7)->number, 24);
   EXPECT_EQ(find_sister_tool(tools, "FR_D10", 3), nullptr);
-  auto message = [](const std::string& text) {
-    try {
-      load_tool_table_csv(text, "t.csv");
-    } catch (const ProfileError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(message("number,name,d,duplo\n1,A,1,1\n2,A,1,1\n").find("t.csv:3: tool name 'A' duplo 1 used by two numbers"),
+  EXPECT_NE(csv_error("number,name,d,duplo\n1,A,1,1\n2,A,1,1\n").find("t.csv:3: tool name 'A' duplo 1 used by two numbers"),
             std::string::npos);
-  EXPECT_NE(message("number,name,d,duplo\n1,A,1,1\n1,A,2,2\n").find("has duplo 1 before"), std::string::npos);
+  EXPECT_NE(csv_error("number,name,d,duplo\n1,A,1,1\n1,A,2,2\n").find("has duplo 1 before"), std::string::npos);
 }
 
 TEST(ToolTableCsv, BadInputNamesFileAndLine) {
-  auto message = [](const std::string& text) {
-    try {
-      load_tool_table_csv(text, "t.csv");
-    } catch (const ProfileError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_NE(message("number,d,colour\n").find("t.csv:1: unknown column 'colour'"), std::string::npos);
-  EXPECT_NE(message("number,name\n").find("needs columns number and d"), std::string::npos);
-  EXPECT_NE(message("number,d\n1,x\n").find("t.csv:2 d"), std::string::npos);
-  EXPECT_NE(message("number,d\n1,1.5\n").find("whole number"), std::string::npos);
-  EXPECT_NE(message("number,d\n1,1\n1,1\n").find("edge D1 twice"), std::string::npos);
-  EXPECT_NE(message("number,d,radius_mm\n1,1,-2\n").find("must be >= 0"), std::string::npos);
-  EXPECT_NE(message("").find("no header"), std::string::npos);
+  EXPECT_NE(csv_error("number,d,colour\n").find("t.csv:1: unknown column 'colour'"), std::string::npos);
+  EXPECT_NE(csv_error("number,name\n").find("needs columns number and d"), std::string::npos);
+  EXPECT_NE(csv_error("number,d\n1,x\n").find("t.csv:2 d"), std::string::npos);
+  EXPECT_NE(csv_error("number,d\n1,1.5\n").find("whole number"), std::string::npos);
+  EXPECT_NE(csv_error("number,d\n1,1\n1,1\n").find("edge D1 twice"), std::string::npos);
+  EXPECT_NE(csv_error("number,d,radius_mm\n1,1,-2\n").find("must be >= 0"), std::string::npos);
+  EXPECT_NE(csv_error("").find("no header"), std::string::npos);
 }
 
 TEST(ToolTableJson, ArrayOrObjectLikeTheProfile) {
