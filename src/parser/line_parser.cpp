@@ -209,10 +209,23 @@ bool LineParser::jump_direction(std::string_view word, JumpDirection& d) {
 }
 
 // The variables a synchronized action writes: every `name =` and `name[literal, ...] =` after
-// its DO (and ELSE). The program reads them as values the action may have changed.
+// its DO (and ELSE). The program reads them as values the action may have changed. Its form is
+// checked: a condition keyword (WHEN, WHENEVER, FROM, EVERY) needs a condition and then DO, and
+// DO an action (Job Planning, "Motion-synchronous actions", structure of a synchronized action:
+// [ID=n] [condition keyword condition] DO action; 12080 as any syntax error).
 void LineParser::collect_sync_targets(ParsedLine& out) const {
   size_t i = 0;
-  while (i < tokens_.size() && !(tokens_[i].kind == TokenKind::Name && tokens_[i].text == "DO")) ++i;
+  size_t condition_at = tokens_.size();  // the condition keyword's token
+  while (i < tokens_.size() && !(tokens_[i].kind == TokenKind::Name && tokens_[i].text == "DO")) {
+    const std::string_view w = tokens_[i].kind == TokenKind::Name ? tokens_[i].text : std::string_view();
+    if (condition_at == tokens_.size() && (w == "WHEN" || w == "WHENEVER" || w == "FROM" || w == "EVERY")) condition_at = i;
+    ++i;
+  }
+  const uint32_t end_column = tokens_.empty() ? 1 : tokens_.back().column;
+  if (i == tokens_.size()) throw LineError(12080, end_column, "synchronized action without DO");
+  if (condition_at + 1 == i) throw LineError(12080, tokens_[i].column, "synchronized action: no condition before DO");
+  if (i + 1 >= tokens_.size() || tokens_[i + 1].kind == TokenKind::End)
+    throw LineError(12080, end_column, "synchronized action: no action after DO");
   for (++i; i + 1 < tokens_.size(); ++i) {
     if (tokens_[i].kind != TokenKind::Name) continue;
     if (tokens_[i + 1].kind == TokenKind::Assign) {

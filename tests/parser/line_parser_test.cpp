@@ -48,6 +48,15 @@ TEST(LineParser, SynchronizedActionNamesWhatItWrites) {
   EXPECT_EQ(l.sync_targets, expected);
   EXPECT_TRUE(p("G1 X10").sync_targets.empty());
   EXPECT_TRUE(p("WHENEVER $AA_IM[X]==$R1 DO M99").sync_targets.empty());
+  EXPECT_TRUE(p("IDS=2 DO $AC_MARKER[1]=0").sync_targets.size() == 1);  // no condition: every cycle
+  for (const char* bad : {"ID=1 WHENEVER $AA_IM[X]>10 M8", "ID=2 WHEN DO M8", "ID=3 WHEN $AA_IM[X]>5 DO"}) {
+    try {
+      p(bad);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const LineError& e) {
+      EXPECT_EQ(e.number(), 12080) << bad;
+    }
+  }
 }
 
 TEST(LineParser, MainBlockNumberAndPlainSkip) {
