@@ -190,7 +190,7 @@ std::optional<Value> InterpreterStateView::tool_variable(std::string_view n, std
   auto number = [](std::optional<double> v) { return v ? std::optional<Value>(Value(*v)) : std::nullopt; };
   const ToolState& tools = interpreter_.tools();
   if (n == "$P_TOOL") return Value(static_cast<double>(tools.edge()));
-  // Radius and lengths in the unit of tool data: inch under G700 (a cycle's $P_TOOLR+1 is an inch).
+  // Radius and lengths in the unit of tool data: inch under G700, the base system under G70/G71.
   const double unit = interpreter_.tool_data_unit();
   if (n == "$P_TOOLR") return Value(tools.offsets().radius_mm / unit);
   if (n == "$P_TOOLL") {

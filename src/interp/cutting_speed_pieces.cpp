@@ -40,7 +40,7 @@ PathElement piece_of(const PathElement& e, geometry::CurvePtr curve, double feed
 
 }  // namespace
 
-bool CuttingSpeedPieces::cut_line(PathElement& e, const CuttingSpeedLaw& law) {
+bool CuttingSpeedPieces::cut_line(const PathElement& e, const CuttingSpeedLaw& law) {
   const geometry::Vec3 a = e.curve->start(), b = e.curve->end();
   const double xa = law.x_at(a), xb = law.x_at(b);
   const double n0 = rpm(law, xa, xa), n1 = rpm(law, xb, xb), mean = rpm(law, xa, xb);
@@ -57,7 +57,7 @@ bool CuttingSpeedPieces::cut_line(PathElement& e, const CuttingSpeedLaw& law) {
   return true;
 }
 
-bool CuttingSpeedPieces::cut_arc(PathElement& e, const CuttingSpeedLaw& law) {
+bool CuttingSpeedPieces::cut_arc(const PathElement& e, const CuttingSpeedLaw& law) {
   const auto& arc = static_cast<const geometry::ArcCurve&>(*e.curve);
   if (arc.axial_travel() != 0.0 || arc.sweep() == 0.0) return false;  // a helix keeps its one feed
   // x(φ) = x_c + r·(a·cos φ + b·sin φ), a and b the law's gradient along the arc's axes.

@@ -17,11 +17,12 @@
 //   the last continues the block (one block in the report, no block change, no exact stop).
 // A circular arc (no helix): x(φ) is not linear along it, so its speed range min/max n is taken
 //   from 17 points at equal angles (a bulge between ends of equal diameter counts too); over
-//   kStep it becomes k sub-arcs of equal angle as above, sub-arc j at F·n̄_j / n̄ with n̄_j the mean
-//   between its own ends and n̄ = n(x(a), x(b)), the mean the interpreter gave the block's feed
-//   (its ends, as for a line): the sub-arcs' times add up to ∫ ds / (f·n) along the arc within
-//   kStep per piece, not to the block's chord-based time (until 2026-11-29 an arc kept that one
-//   feed: a quarter arc from Ø40 to Ø80 was 8 % short when convex, 10 % long when concave).
+//   kStep it becomes k sub-arcs of equal angle as above, sub-arc j at F·n̄_j / n̄ with n̄_j the
+//   speed of its mean x (∫ x dφ / Δφ, exact where no limit binds) and n̄ = n(x(a), x(b)), the
+//   mean the interpreter gave the block's feed (its ends, as for a line): the sub-arcs' times add
+//   up to ∫ ds / (f·n) along the arc, not to the block's chord-based time (until 2026-11-29 an
+//   arc kept that one feed: a quarter arc from Ø40 to Ø80 was 8 % short when convex, 10 % long
+//   when concave).
 #include "interp/path_element.hpp"
 
 namespace drycut::interp {
@@ -34,8 +35,8 @@ class CuttingSpeedPieces final : public ElementSink {
 
  private:
   // Hand the element on in pieces; false: it needs none (the caller hands it on whole).
-  bool cut_line(PathElement& e, const CuttingSpeedLaw& law);
-  bool cut_arc(PathElement& e, const CuttingSpeedLaw& law);
+  bool cut_line(const PathElement& e, const CuttingSpeedLaw& law);
+  bool cut_arc(const PathElement& e, const CuttingSpeedLaw& law);
   ElementSink& next_;
 };
 

@@ -213,7 +213,7 @@ bool LineParser::jump_direction(std::string_view word, JumpDirection& d) {
 // checked: a condition keyword (WHEN, WHENEVER, FROM, EVERY) needs a condition and then DO, and
 // DO an action (Job Planning, "Motion-synchronous actions", structure of a synchronized action:
 // [ID=n] [condition keyword condition] DO action; 12080 as any syntax error).
-void LineParser::collect_sync_targets(ParsedLine& out) const {
+void LineParser::read_sync_action(ParsedLine& out) const {
   size_t i = 0;
   size_t condition_at = tokens_.size();  // the condition keyword's token
   while (i < tokens_.size() && !(tokens_[i].kind == TokenKind::Name && tokens_[i].text == "DO")) {
@@ -275,7 +275,7 @@ bool LineParser::parse_statement(ParsedLine& out) {
   if (w == "REPEATB") return parse_repeat_section(out, true);
   if (w == "WHEN" || w == "WHENEVER" || w == "FROM" || w == "EVERY" || w == "DO" ||
       ((w == "ID" || w == "IDS") && peek(1).kind == TokenKind::Assign)) {
-    collect_sync_targets(out);
+    read_sync_action(out);
     return whole_line(Statement::SyncAction);
   }
   if (w == "SETINT" || w == "ENABLE" || w == "DISABLE" || w == "CLRINT") return whole_line(Statement::Interrupt);

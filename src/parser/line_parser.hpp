@@ -25,7 +25,7 @@ class LineParser {
   void parse_tokens(ParsedLine& out);  // the general path on the line the lexer upper-cased last
   void parse_head(ParsedLine& out);
   bool parse_statement(ParsedLine& out);
-  void collect_sync_targets(ParsedLine& out) const;
+  void read_sync_action(ParsedLine& out) const;
   // parse_statement's statements with a syntax of their own; true (the line is a statement).
   bool parse_extern(ParsedLine& out);
   bool parse_define(ParsedLine& out);
