@@ -148,12 +148,15 @@ void ProgramLoader::note_sync_action_targets() {
   for (const std::string& t : parsed_.sync_targets) {
     const size_t bracket = t.find('[');
     const std::string_view name = std::string_view(t).substr(0, bracket);
-    const bool r_form = name == "$R" || ((name.starts_with("$R") || name.starts_with("R")) && name.size() > 1 &&
-                                         all_digits(name.substr(name[0] == '$' ? 2 : 1)));
-    if (r_form) {
-      if (name != "$R") sync_written_r_.insert(std::stod(std::string(name.substr(name[0] == '$' ? 2 : 1))));
-      else if (bracket != std::string::npos) sync_written_r_.insert(std::stod(t.substr(bracket + 1)));
-      else sync_actions_writes_all_r_ = true;
+    // Rn (the program's spelling) is read as $Rn; a literal index is the key's first number.
+    const std::string dollar_name = name.size() > 1 && name[0] == 'R' && all_digits(name.substr(1)) ? "$" + std::string(name)
+                                                                                                     : std::string(name);
+    const Value index(bracket != std::string::npos ? std::stod(t.substr(bracket + 1)) : 0.0);
+    const std::span<const Value> indices(&index, bracket != std::string::npos ? 1 : 0);
+    if (const auto r = r_parameter_index(dollar_name, indices)) {
+      sync_written_r_.insert(*r);
+    } else if (dollar_name == "$R") {
+      sync_actions_writes_all_r_ = true;  // $R[computed index]
     } else if (name.starts_with("$")) {
       system_variables_.note_sync_action_target(t);
     } else {
@@ -203,8 +206,7 @@ double ProgramLoader::Scope::r_parameter(double real_index, uint32_t column) con
   const double index = index_from_real(real_index);
   if (!(index >= 0 && index < static_cast<double>(kRParameterCount)))
     throw LineError(12430, column, "R parameter index must be 0..999");
-  if ((loader_.sync_actions_writes_all_r_ || !loader_.sync_written_r_.empty()) &&
-      (loader_.sync_actions_writes_all_r_ || loader_.sync_written_r_.count(index)))
+  if (loader_.sync_actions_writes_all_r_ || (!loader_.sync_written_r_.empty() && loader_.sync_written_r_.count(index)))
     loader_.system_variables_.note_external_read("R" + number_to_text(index) + " (written by a synchronized action)");
   return loader_.r_parameters_[static_cast<size_t>(index)];
 }

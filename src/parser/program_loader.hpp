@@ -223,7 +223,7 @@ class ProgramLoader {
   SystemVariables system_variables_;
   bool sync_actions_seen_ = false;  // a synchronized action or interrupt was programmed ($Rn polls wait)
   // What synchronized actions write (after DO): R parameters (any spelling), user variables by
-  // name. The program reads them as values the actions may have changed (note_sync_read).
+  // name. The program reads them as values the actions may have changed (note_external_read).
   std::set<double> sync_written_r_;
   bool sync_actions_writes_all_r_ = false;  // $R[computed index]
   std::set<std::string, std::less<>> sync_written_names_;
