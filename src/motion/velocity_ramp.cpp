@@ -32,6 +32,57 @@ void append_ramp(SegmentProfile& p, double v0, double v1, RampLimits l) {
   }
 }
 
+// Distance of the ramp vl -> p (vl <= p) under a jerk limit with p = vhigh + w², and its
+// derivative by w. With Δ = p - vl: D = (vl + p)/2 · T(Δ) and dD/dw = 2w · dD/dΔ, where
+// dD/dΔ = T/2 + (vl + p)/2 · T'(Δ), T' = 1/a at full acceleration and 1/sqrt(j·Δ) below it.
+struct DistanceSlope {
+  double distance, slope;
+};
+DistanceSlope ramp_distance_by_w(double vl, double vhigh, double w, RampLimits l) {
+  const double p = vhigh + w * w, dv = p - vl;
+  if (dv <= 0) return {0.0, 0.0};
+  if (dv >= l.accel * l.accel / l.jerk) {
+    const double t = dv / l.accel + l.accel / l.jerk;
+    return {0.5 * (vl + p) * t, w * t + (vl + p) * w / l.accel};
+  }
+  const double root = std::sqrt(dv * l.jerk);  // T = 2·sqrt(Δ/j) = 2·Δ/root, T' = 1/root
+  const double t = 2.0 * dv / root;
+  return {0.5 * (vl + p) * t, w * t + (vl + p) * (w / root)};
+}
+
+// The highest peak of a SOFT segment v0 -> peak -> v1 that fits `length`: the root of
+// needed(p) = D(v0, p) + D(p, v1) - length on [vhigh, cap], where needed(vhigh) < length <
+// needed(cap). In p the ramp from vhigh starts like a square root (infinite slope), so Newton
+// overshoots below the bracket; in w = sqrt(p - vhigh) each ramp's distance is convex and
+// increasing (jerk phases: (2·vhigh + w²)·w/sqrt(j) and (c + w²)·sqrt(d + w²)/sqrt(j); full
+// acceleration: polynomials in w² with positive coefficients), so Newton from w(cap) descends
+// monotonically onto the root. Once the distance is exact to 1e-12 of the length from above,
+// a double step lands just below it: the result has needed <= length (the cruise is never
+// negative). A step out of the bracket [lo, hi] bisects (rounding only).
+// (Illinois regula falsi in p took ~15 steps; this solve is a hot spot on short SOFT blocks.)
+double solve_peak(double v0, double v1, double vhigh, double cap, double length, RampLimits l) {
+  auto f = [&](double w) {
+    const DistanceSlope up = ramp_distance_by_w(v0, vhigh, w, l), down = ramp_distance_by_w(v1, vhigh, w, l);
+    return DistanceSlope{up.distance + down.distance - length, up.slope + down.slope};
+  };
+  double lo = 0.0, hi = std::sqrt(cap - vhigh), x = hi;
+  DistanceSlope fx = f(x);
+  for (int i = 0; i < 100 && hi - lo > 1e-13 * hi; ++i) {
+    const double step = fx.slope > 0 ? fx.distance / fx.slope : 0.5 * (hi - lo);
+    double next = x - (fx.distance > 0 && fx.distance <= 1e-12 * length ? 2.0 * step : step);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    x = next;
+    fx = f(x);
+    if (fx.distance <= 0) {
+      lo = x;
+      if (fx.distance > -1e-12 * length) break;  // distance exact to rounding: done
+    } else {
+      hi = x;
+    }
+  }
+  return vhigh + lo * lo;
+}
+
 }  // namespace
 
 double ramp_time(double v0, double v1, RampLimits l) {
@@ -51,6 +102,12 @@ double ramp_reach(double v0, double distance, RampLimits l) {
   const double d_star = (2.0 * v0 + dv_star) * a / j;
   if (distance <= d_star) {
     // D = 2·v0·u + j·u³ with u = sqrt(Δv/j): one real root (Cardano, depressed cubic).
+    // From rest (the braking ramp into the window's end) Cardano's root is u = cbrt(D/j)
+    // exactly (sqrt(q²/4) = |q|/2 in IEEE arithmetic): taken directly, the same value.
+    if (v0 == 0.0) {
+      const double u = cube_root(distance / j);
+      return j * u * u;
+    }
     const double p = 2.0 * v0 / j, q = -distance / j;
     const double disc = std::sqrt(q * q / 4.0 + p * p * p / 27.0);
     // The two Cardano cube roots multiply to -p/3, so one cbrt gives both (cbrt is a hot spot).
@@ -102,31 +159,10 @@ SegmentProfile plan_segment(double v0, double v1, double cap, double length, Ram
   if (needed(cap) > length) {
     if (!has_jerk_limit(l)) {
       peak = std::sqrt((2.0 * l.accel * length + v0 * v0 + v1 * v1) / 2.0);
+    } else if (min_distance >= length * (1.0 - 1e-12)) {
+      peak = vhigh;  // the ramp v0 -> v1 fills the segment (to the solve's own tolerance)
     } else {
-      // Illinois (modified regula falsi) on needed(peak) - length: keeps the bracket
-      // needed(lo) <= length < needed(hi) like bisection but converges in a few steps instead
-      // of ~45 (this solve is the planner's hot spot on short SOFT segments).
-      double lo = vhigh, hi = cap;
-      double f_lo = needed(lo) - length, f_hi = needed(hi) - length;
-      int last_side = 0;
-      for (int i = 0; i < 100 && hi - lo > 1e-12 * hi; ++i) {
-        double mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-        const double f_mid = needed(mid) - length;
-        if (f_mid <= 0) {
-          lo = mid;
-          f_lo = f_mid;
-          if (last_side < 0) f_hi *= 0.5;
-          last_side = -1;
-          if (f_mid > -1e-12 * length) break;  // distance exact to rounding: done
-        } else {
-          hi = mid;
-          f_hi = f_mid;
-          if (last_side > 0) f_lo *= 0.5;
-          last_side = 1;
-        }
-      }
-      peak = lo;
+      peak = solve_peak(v0, v1, vhigh, cap, length, l);
     }
     peak = std::clamp(peak, vhigh, cap);
   }
