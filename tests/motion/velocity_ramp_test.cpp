@@ -1,6 +1,7 @@
 // Closed-form ramps: hand-derived times and distances, reach as the inverse of distance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -94,6 +95,34 @@ TEST(VelocityRamp, SoftSegmentEndsAtItsLength) {
   EXPECT_NEAR(end.a, 0.0, 1e-6);
   // The peak satisfies the distance equation exactly.
   EXPECT_NEAR(ramp_distance(10, p.peak, l) + ramp_distance(p.peak, 30, l), 3.0, 1e-9);
+}
+
+TEST(VelocityRamp, SoftSegmentPeakMatchesABisectionOfTheDistanceEquation) {
+  // Reference: plain bisection of D(v0, p) + D(p, v1) = L on [max(v0, v1), cap], in both the
+  // jerk-only regime (Δv < a²/j = 625) and at full acceleration, equal and unequal ends, a
+  // peak just above the higher end and one near the cap.
+  const RampLimits l{5000, 40000};
+  auto needed = [&](double v0, double v1, double p) { return ramp_distance(v0, p, l) + ramp_distance(p, v1, l); };
+  for (double v0 : {0.0, 3.0, 25.0, 400.0}) {
+    for (double v1 : {0.0, 3.0, 25.0, 400.0}) {
+      const double vhigh = std::max(v0, v1), cap = 2000.0;
+      for (double fraction : {1e-9, 1e-4, 0.01, 0.3, 0.9}) {
+        // A length between the ramp v0 -> v1 alone and the ramps through the cap.
+        const double lo_len = needed(v0, v1, vhigh), hi_len = needed(v0, v1, cap);
+        const double length = lo_len + fraction * (hi_len - lo_len);
+        double lo = vhigh, hi = cap;
+        for (int i = 0; i < 200; ++i) (needed(v0, v1, 0.5 * (lo + hi)) <= length ? lo : hi) = 0.5 * (lo + hi);
+        const SegmentProfile p = plan_segment(v0, v1, cap, length, l);
+        SCOPED_TRACE(testing::Message() << "v0 " << v0 << " v1 " << v1 << " fraction " << fraction);
+        EXPECT_NEAR(p.peak, lo, 1e-9 * lo + 1e-12);
+        EXPECT_LE(needed(v0, v1, p.peak), length * (1 + 1e-12));
+        EXPECT_NEAR(evaluate(p, p.duration).s, length, 1e-9 * length + 1e-15);
+      }
+    }
+  }
+  // A ramp that fills the segment exactly: the peak is the higher end.
+  const double length = ramp_distance(3.0, 25.0, l);
+  EXPECT_DOUBLE_EQ(plan_segment(3.0, 25.0, 2000.0, length, l).peak, 25.0);
 }
 
 TEST(VelocityRamp, ShortSegmentOfALongRampUsesConstantAcceleration) {
