@@ -363,7 +363,14 @@ double Planner::extend(RampAnchor& anchor, double v_here, const Segment& seg) {
     const double chained = ramp_reach(anchor.velocity, anchor.distance + seg.length, chained_limits);
     // The restart from here is only computed when a cheap upper bound of it beats the chain
     // (the passes' hot spot: mostly one ramp_reach per node instead of two; same decision).
-    const bool chain_wins = chained >= reach_upper_bound(v_here, seg.length, seg.ramp);
+    // Not even the bound when the segment's jerk limit is the chain's and the chained ramp
+    // stays below full acceleration: such ramps do not depend on the acceleration limit, and
+    // one ramp over a distance reaches at least as high as two ramps (the chain up to here,
+    // then the restart) over it.
+    const bool same_jerk_below_accel =
+        seg.ramp.jerk == anchor.limits.jerk &&
+        chained - anchor.velocity < chained_limits.accel * chained_limits.accel / chained_limits.jerk;
+    const bool chain_wins = same_jerk_below_accel || chained >= reach_upper_bound(v_here, seg.length, seg.ramp);
     const double direct = chain_wins ? 0.0 : ramp_reach(v_here, seg.length, seg.ramp);
     if (chain_wins || chained >= direct) {
       anchor.distance += seg.length;
