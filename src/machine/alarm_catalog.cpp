@@ -46,6 +46,7 @@ constexpr std::array kCatalog{
     AlarmInfo{14080, S::Alarm, "Jump destination not found", A::ThirdParty},
     AlarmInfo{14130, S::Alarm, "Too many initialization values", A::ThirdParty},
     AlarmInfo{14500, S::Alarm, "Illegal DEF or PROC instruction in part program", A::ThirdParty},
+    AlarmInfo{14760, S::Alarm, "Auxiliary function of a group programmed repeatedly", A::Memory},
     AlarmInfo{14800, S::Alarm, "Programmed path velocity smaller than or equal to zero", A::ThirdParty},
     AlarmInfo{14820, S::Alarm, "Negative maximum spindle speed programmed for constant cutting rate", A::Siemens},
     // Contour preparation started wrongly (CONTPRON; drycut: DRYCUT_CONTOUR_BEGIN/END).

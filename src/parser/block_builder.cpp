@@ -55,6 +55,18 @@ class ProgramLoader::BlockBuilder {
 
   void m_word(const Item& item) { add_m(item, item.code, item.expr, item.extension); }
 
+  // M3, M4 and M5 of one spindle are one auxiliary function group: two different ones in a
+  // block (M3 S1000 M5) are alarm 14760; the same spindle written with and without its number
+  // (M3 M1=5) is not recognised here (the master spindle is the interpreter's).
+  void refuse_second_spindle_direction(const Item& item, int64_t code, int extension) const {
+    if (code < 3 || code > 5) return;
+    for (const MWord& m : out_.m)
+      if (m.code >= 3 && m.code <= 5 && m.code != code && m.extension == extension)
+        throw LineError(14760, item.column,
+                        "M" + std::to_string(m.code) + " and M" + std::to_string(code) +
+                            " of one spindle in a block (one auxiliary function group)");
+  }
+
   void add_m(const Item& item, int64_t code, ExprIndex expr, int extension) {
     // M is an INT auxiliary function value, 0..2147483647 (Fundamentals, "Auxiliary functions":
     // machine builders' M functions above 999, M1010 or M=QU(1500), are ordinary; until
@@ -66,6 +78,7 @@ class ProgramLoader::BlockBuilder {
       code = static_cast<int64_t>(v);
     }
     if (code > static_cast<int64_t>(kMaxM)) throw LineError(12160, item.column, "M value must be an integer 0..2147483647");
+    refuse_second_spindle_direction(item, code, extension);
     out_.m.push_back(MWord{static_cast<int>(code), extension, item.column});
     if (code < static_cast<int64_t>(l_.m_used_.size()))
       l_.m_used_.set(static_cast<size_t>(code));
