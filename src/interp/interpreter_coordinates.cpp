@@ -25,9 +25,9 @@ Vector3d Interpreter::tool_length_vector() const {
   // assigns every tool as a milling (1) or turning (2) tool (Function Manual W1, "Tool length
   // and plane change").
   const ToolOffsets& o = tools_.offsets();
-  ModalState fixed;
-  fixed.plane = tool_length_const_ == 18 ? PlaneSelect::G18 : tool_length_const_ == 19 ? PlaneSelect::G19 : PlaneSelect::G17;
-  const PlaneIndices plane = tool_length_const_ != 0 ? fixed.plane_indices() : state_.plane_indices();
+  const PlaneSelect fixed =
+      tool_length_const_ == 18 ? PlaneSelect::G18 : tool_length_const_ == 19 ? PlaneSelect::G19 : PlaneSelect::G17;
+  const PlaneIndices plane = tool_length_const_ != 0 ? ModalState::indices_of(fixed) : state_.plane_indices();
   Vector3d length = Vector3d::Zero();
   const bool turning_tool = tool_length_type_ == 2 || (tool_length_type_ == 0 && o.type >= 400 && o.type <= 599);
   if (turning_tool) {

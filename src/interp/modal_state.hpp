@@ -90,8 +90,9 @@ struct ModalState {
 
   int plane_normal_axis() const { return plane == PlaneSelect::G17 ? 2 : plane == PlaneSelect::G18 ? 1 : 0; }
   // G17: (X, Y, normal Z); G18: (Z, X, normal Y); G19: (Y, Z, normal X).
-  PlaneIndices plane_indices() const {
-    return plane == PlaneSelect::G17 ? PlaneIndices{0, 1, 2} : plane == PlaneSelect::G18 ? PlaneIndices{2, 0, 1} : PlaneIndices{1, 2, 0};
+  PlaneIndices plane_indices() const { return indices_of(plane); }
+  static PlaneIndices indices_of(PlaneSelect p) {
+    return p == PlaneSelect::G17 ? PlaneIndices{0, 1, 2} : p == PlaneSelect::G18 ? PlaneIndices{2, 0, 1} : PlaneIndices{1, 2, 0};
   }
   bool thread_mode() const {
     return motion == MotionMode::Thread || motion == MotionMode::ThreadIncreasing ||
