@@ -407,13 +407,16 @@ void ProgramLoader::note_input_jump() {
 }
 
 std::string ProgramLoader::alarm_decided_by_unknown_input(int alarm) const {
-  // The IF (or ELSE) blocks the alarm stands in, innermost first, then a jump decided by an
-  // input that arrived here within the last few lines (IF $A_IN[5]==0 GOTOF ERR / ERR: SETAL),
-  // then a measured value read before.
-  constexpr uint64_t kLinesAfterJump = 3;
-  for (auto it = frames_.back()->control.rbegin(); it != frames_.back()->control.rend(); ++it)
-    if (it->kind == Statement::If && !it->awaited_input.empty() && !system_variables_.signal_given(it->awaited_input))
-      return it->awaited_input;
+  // The IF (or ELSE) blocks the alarm stands in, innermost first, those of the calling levels
+  // too (IF $A_IN[5]==0 / OEM_ALARM(65000, ...): the builder's central alarm program), then a
+  // jump decided by an input that arrived here within the lines of an error branch (IF
+  // $A_IN[12]==0 GOTOF ERR / ERR: MSG, M5 M9, a retract, SETAL), then a measured value read
+  // before.
+  constexpr uint64_t kLinesAfterJump = 10;
+  for (auto frame = frames_.rbegin(); frame != frames_.rend(); ++frame)
+    for (auto it = (*frame)->control.rbegin(); it != (*frame)->control.rend(); ++it)
+      if (it->kind == Statement::If && !it->awaited_input.empty() && !system_variables_.signal_given(it->awaited_input))
+        return it->awaited_input;
   if (!input_jump_.first.empty() && steps_ - input_jump_.second <= kLinesAfterJump &&
       !system_variables_.signal_given(input_jump_.first))
     return input_jump_.first;

@@ -88,9 +88,10 @@ SystemVariables::ReadResult SystemVariables::read(std::string_view name, std::sp
     ++view_reads_;  // state of the interpreter: a loop that polls the clock is not endless
     return {Value(*run_clock_reading(name, view_ ? poll_clock() : 0.0)), false};
   }
-  // A measured value ($AA_MM[ax], $AA_MW[ax], $AA_MM1..4, $AA_MW1..4: Job Planning, "Measuring"):
-  // a dry run touches nothing, so what the program decides from it is unknown (990021).
-  if (name.starts_with("$AA_MM") || name.starts_with("$AA_MW")) measurement_read_ = key;
+  // A measured value ($AA_MM[ax], $AA_MW[ax], $AA_MM1..4, $AA_MW1..4: Job Planning, "Measuring")
+  // or whether the probe switched ($AC_MEA[n]): a dry run touches nothing, so what the program
+  // decides from it is unknown (990021).
+  if (name.starts_with("$AA_MM") || name.starts_with("$AA_MW") || name == "$AC_MEA") measurement_read_ = key;
   const SystemVariableClass c = classify_system_variable(name);
   if (c == SystemVariableClass::InputOutput) {
     ++input_reads_;
