@@ -591,9 +591,14 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
   // A big state (large arrays) is compared only every state-size/1 KiB lines, so that the guard
   // costs at most about 1 KiB of copying per line executed; states up to 1 KiB are compared at
   // every jump. Skipping visits never gives a false alarm, and a loop is still found: the visits
-  // that are checked form a deterministic sequence too, so they repeat as well.
+  // that are checked form a deterministic sequence too, so they repeat as well. A loop that
+  // reads an input is checked at every jump back: where a wait on a signal ends (and so how many
+  // passes of its dwell count) must not depend on how big the global data are (the measuring
+  // cycles' GUD arrays made such waits run passes more).
   constexpr uint64_t kStateBytesPerLine = 1024;
-  if (steps_ < next_loop_check_) return false;
+  const bool polls_input = !awaited.empty() || system_variables_.input_reads() != input_reads_at_loop_check_;
+  if (steps_ < next_loop_check_ && !polls_input) return false;
+  input_reads_at_loop_check_ = system_variables_.input_reads();
   const Frame& f = *frames_.back();
   // The site: where the jump goes, in which program at which depth.
   const uint64_t site = (f.reader.tell().offset * 31 + reinterpret_cast<uintptr_t>(f.file)) * 17 + frames_.size();

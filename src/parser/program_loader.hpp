@@ -262,6 +262,7 @@ class ProgramLoader {
   uint64_t main_run_reads_seen_ = 0;  // system_variables_.main_run_reads() at the last block
   uint64_t steps_ = 0;
   uint64_t input_reads_at_endfor_ = 0;  // input reads at the last ENDFOR (next_for_pass)
+  uint64_t input_reads_at_loop_check_ = 0;  // input reads at the last check_endless_loop
   std::pair<std::string, uint64_t> input_jump_;  // the input that decided the last jump, steps_ then
   const ControllerStateView* state_view_ = nullptr;  // frames of FRAME variables (components)
   uint64_t work_blocks_ = 0;   // blocks handed on that move axes or program M functions or S
