@@ -276,6 +276,11 @@ class ProgramLoader::BlockBuilder {
 
   // G[8]=2, M[2]=3, S[1]=1000, H[7]=40, AX[AXNAME("X")]=10, T[1]=5, D[1]=2
   void indexed_address(const Item& item) {
+    // A name that is none of these is not defined, with any number of indices (_TBA[0,1]=1 for
+    // the array _TAB: 12550, not 12410).
+    static constexpr std::string_view kIndexed[] = {"G", "M", "S", "H", "T", "D", "LIMS", "AX"};
+    if (std::find(std::begin(kIndexed), std::end(kIndexed), item.name) == std::end(kIndexed))
+      throw LineError(12550, item.column, "name " + std::string(item.name) + " not defined");
     if (item.index_count != 1) throw LineError(12410, item.column, std::string(item.name) + "[...] takes one index");
     const Value index = l_.eval_value(l_.parsed_.pool.args[item.index_first]);
     if (item.name == "AX") {
@@ -322,7 +327,6 @@ class ProgramLoader::BlockBuilder {
       address_value(std::string(item.name) + std::to_string(k), item);
       return;
     }
-    throw LineError(12550, item.column, "name " + std::string(item.name) + " not defined");
   }
 
   CommandWord& add_command(const Item& item) {
