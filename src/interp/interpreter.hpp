@@ -418,10 +418,11 @@ class Interpreter {
   void become_master_run_up(const SpindleCommand& command, const SpindleRunUp& ramp);
   void note_tool_change_stops_spindle();
   void wait_for_spindle_speed(const PathElement& next);
-  struct RapidLimits {
-    double v = 0, a = 0, j = 0;  // path velocity, acceleration, jerk (0: BRISK) of a G0 line
+  struct ChordLimits {
+    double v = 0, a = 0, j = 0;  // path velocity, acceleration, jerk (0: BRISK) along a straight move
   };
-  RapidLimits rapid_limits(const PathElement& e, double length) const;
+  ChordLimits chord_limits(const PathElement& e, double length) const;
+  bool clock_at_rest_ = true;  // the clock's last motion ended at rest (G60/G9), or none yet
   double g96_set_speed(const Eigen::Vector3d& machine_position, double cutting_speed_mm_min) const;
   Eigen::Vector3d transformation_start_ = Eigen::Vector3d::Zero();  // the position when it began
   ExtraAxes extra_axes_;

@@ -55,6 +55,8 @@ void Interpreter::add_nominal_time(const PathElement& e) {
 }
 
 void Interpreter::add_element_time(const PathElement& e) {
+  // A dwell, stop, tool change or positioning brings the path to rest; a change of modes does not.
+  if (!e.is_motion() && e.kind != ElementKind::DynamicsChange) clock_at_rest_ = true;
   if (e.kind == ElementKind::Dwell) {
     nominal_time_s_ += e.dwell_s;
     if (e.run_up_wait == 0) least_time_s_ += e.dwell_s;  // (a run-up wait may come out shorter)
@@ -80,46 +82,59 @@ void Interpreter::add_element_time(const PathElement& e) {
   // The length F refers to and the planner plans along: with A, C, U ... moving, their travel
   // counts (a G0 C90 or G1 A90 alone has no geometry length and took no time before 2026-11-29).
   const double length = e.path_length();
+  const bool from_rest = clock_at_rest_;
+  const bool to_rest = e.dynamics.transition == TransitionMode::ExactStop || e.dynamics.exact_stop_this_block;
+  clock_at_rest_ = to_rest;
   if (!e.rapid) {
     if (e.feed_mm_s <= 0) return;
-    nominal_time_s_ += length / e.feed_mm_s;
+    // A straight feed move from rest to rest (G60, G9: an axis exercise's strokes) takes its
+    // ramps; in continuous-path mode the feed carries on through the corners: length / F.
+    double t = length / e.feed_mm_s;
+    if (from_rest && to_rest && e.kind == ElementKind::Line) {
+      const ChordLimits l = chord_limits(e, length);
+      if (l.v > 0 && std::isfinite(l.v) && l.a > 0 && std::isfinite(l.a)) t = rest_to_rest_s(length, l.v, l.a, l.j);
+    }
+    nominal_time_s_ += t;
     least_time_s_ += length / e.feed_mm_s;
-    if (tools_.has_tool()) cutting_time_s_ += length / e.feed_mm_s;  // a tool active (not T0): cutting
+    if (tools_.has_tool()) cutting_time_s_ += t;  // a tool active (not T0): cutting
     return;
   }
   // A rapid move (posts write their approach as separate G0 blocks, each from rest to rest; a
   // blended chain takes less, never less than at its top speed throughout).
-  const RapidLimits l = rapid_limits(e, length);
+  const ChordLimits l = chord_limits(e, length);
   if (!(l.v > 0) || !std::isfinite(l.v)) return;
   nominal_time_s_ += l.a > 0 && std::isfinite(l.a) ? rest_to_rest_s(length, l.v, l.a, l.j) : length / l.v;
   least_time_s_ += length / l.v;
 }
 
-Interpreter::RapidLimits Interpreter::rapid_limits(const PathElement& e, double length) const {
+Interpreter::ChordLimits Interpreter::chord_limits(const PathElement& e, double length) const {
   // Along the move's chord u each axis i bounds the path to v_i/|u_i|, a_i/|u_i| (and under SOFT
-  // j_i/|u_i| besides the path jerk), with the G0 factors, the dynamic group and
-  // ACC/VELOLIM/JERKLIM, as the planner's element limits (motion/element_dynamics.cpp) take them.
+  // j_i/|u_i| besides the path jerk), with the G0 or SOFT factors, the dynamic group and
+  // ACC/VELOLIM/JERKLIM, as the planner's element limits (motion/element_dynamics.cpp) take them;
+  // a feed move also by F.
   if (length <= 0) return {};
   const Eigen::Vector3d u = (e.curve->end() - e.curve->start()) / length;  // length: path_length()
   const machine::DynamicGroupFactors& group = profile_.dynamic_groups[static_cast<size_t>(e.dynamics.group)];
   const bool soft = e.dynamics.profile == AccelProfile::Soft;
-  double v = std::numeric_limits<double>::infinity(), a = v;
-  double j = soft ? profile_.path_jerk_mm_s3 * group.max_path_jerk * profile_.g0_jerk_factor : 0.0;
+  const double accel_factor = e.rapid ? profile_.g0_accel_factor : (soft ? profile_.soft_accel_factor : 1.0);
+  const double jerk_factor = e.rapid ? profile_.g0_jerk_factor : 1.0;
+  double v = e.rapid ? std::numeric_limits<double>::infinity() : e.feed_mm_s, a = std::numeric_limits<double>::infinity();
+  double j = soft ? profile_.path_jerk_mm_s3 * group.max_path_jerk * jerk_factor : 0.0;
   for (size_t i = 0; i < 3 && i < profile_.axes.size(); ++i) {
     const double t = std::abs(u[static_cast<Eigen::Index>(i)]);
     if (t < 1e-12) continue;
     const auto& axis = profile_.axes[i];
     v = std::min(v, axis.max_velocity_mm_s * e.dynamics.limits.velocity[i] / t);
-    a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * e.dynamics.limits.accel[i] * profile_.g0_accel_factor / t);
-    if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * e.dynamics.limits.jerk[i] * profile_.g0_jerk_factor / t);
+    a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * e.dynamics.limits.accel[i] * accel_factor / t);
+    if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * e.dynamics.limits.jerk[i] * jerk_factor / t);
   }
   for (const ExtraAxisMove& m : e.extra_axes) {  // each at its own rapid limits
     const double t = std::abs(m.travel) / length;
     if (t < 1e-12 || m.axis < 0 || static_cast<size_t>(m.axis) >= profile_.extra_axes.size()) continue;
     const auto& axis = profile_.extra_axes[static_cast<size_t>(m.axis)];
     v = std::min(v, axis.max_velocity_mm_s / t);
-    a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * profile_.g0_accel_factor / t);
-    if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * profile_.g0_jerk_factor / t);
+    a = std::min(a, axis.max_accel_mm_s2 * group.max_ax_accel * accel_factor / t);
+    if (soft) j = std::min(j, axis.max_jerk_mm_s3 * group.max_ax_jerk * jerk_factor / t);
   }
   return {v, a, j};
 }
