@@ -9,6 +9,7 @@
 #include <typeinfo>
 
 #include "interp/geometry/arc_curve.hpp"
+#include "interp/geometry/polynomial_span.hpp"
 #include "motion/velocity_ramp.hpp"
 
 namespace drycut::motion {
@@ -206,8 +207,22 @@ struct SampledRefiner {
   const DiscretisationRule& rule;
   const PointLimits& limits_at;
   std::vector<Station>& out;
+  const geometry::PolynomialSpan* span = nullptr;  // set: halve in its parameter (header, step 4)
 
   Station station(double s) const { return station_at(curve, s, limits_at); }
+
+  // The midpoint of [a, b], whose span parameters are ua and ub: a spline span's is at the mean
+  // parameter um, its arc length from the span's table (no inversion); any other curve's at the
+  // mean arc length (um unused).
+  Station midpoint(const Station& a, double ua, const Station& b, double ub, double& um) const {
+    if (!span) return station(0.5 * (a.s + b.s));
+    um = 0.5 * (ua + ub);
+    Station m{span->arc_length_at(um), geometry::PolynomialSpan::by_arc_length(span->derivatives(um)), {}, {}, {}, {}};
+    const LocalLimits limits = limits_at(m.point);
+    m.bound = limits.bound;
+    m.ramp = limits.ramp;
+    return m;
+  }
 
   // The tangent turns by at most max_sampled_turn from a to m and from m to b: the per-axis
   // components then behave like cos/sin over a small angle, and an extreme between the samples
@@ -253,9 +268,11 @@ struct SampledRefiner {
   }
 
   // beyond_a, beyond_b: the bound of the sample next to a (before it) and to b (after it);
-  // -infinity at the element's ends, which are nodes of their own.
-  void refine(const Station& a, Station b, int depth, double beyond_a, double beyond_b) {
-    Station m = station(0.5 * (a.s + b.s));
+  // -infinity at the element's ends, which are nodes of their own. ua, ub: the span parameters
+  // of a and b (spline spans).
+  void refine(const Station& a, double ua, Station b, double ub, int depth, double beyond_a, double beyond_b) {
+    double um = 0.0;
+    Station m = midpoint(a, ua, b, ub, um);
     const LocalLimits w = limits_at(worst_point(a, m, b));
     const int budget = rule.max_segments - static_cast<int>(out.size());
     const bool can_split = depth < kMaxDepth && budget > 8 && b.s - a.s > 2 * rule.min_piece_mm;
@@ -266,9 +283,9 @@ struct SampledRefiner {
       return;
     }
     const double va = a.bound.velocity, vb = b.bound.velocity;
-    refine(a, m, depth + 1, beyond_a, vb);
+    refine(a, ua, m, um, depth + 1, beyond_a, vb);
     const Station from = out.back();
-    refine(from, std::move(b), depth + 1, va, beyond_b);
+    refine(from, um, std::move(b), ub, depth + 1, va, beyond_b);
   }
 };
 
@@ -289,10 +306,14 @@ bool discretise_element(const geometry::Curve& curve, double length, double fine
     DiscretisationRule sampled = rule;
     sampled.bound_tolerance = rule.sampled_bound_tolerance;
     sampled.ramp_tolerance = rule.sampled_ramp_tolerance;
-    SampledRefiner refiner{curve, length, sampled, limits_at, out};
+    // A span's parameter runs over [0, parameter_end()] (PolynomialSpan is final: the typeid test).
+    static_assert(std::is_final_v<geometry::PolynomialSpan>);
+    const auto* span = typeid(curve) == typeid(geometry::PolynomialSpan)
+                           ? static_cast<const geometry::PolynomialSpan*>(&curve) : nullptr;
+    SampledRefiner refiner{curve, length, sampled, limits_at, out, span};
     const Station start = out.back();
     constexpr double kOpen = -std::numeric_limits<double>::infinity();
-    refiner.refine(start, station(length), 0, kOpen, kOpen);
+    refiner.refine(start, 0.0, station(length), span ? span->parameter_end() : 0.0, 0, kOpen, kOpen);
     return true;
   }
   if (rule.equal_segments || !arc || arc->sweep() == 0.0) {

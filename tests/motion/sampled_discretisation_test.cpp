@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "interp/geometry/polynomial_span.hpp"
 #include "motion/element_discretisation.hpp"
 #include "motion/velocity_ramp.hpp"
 #include "test_curves.hpp"
@@ -102,6 +103,41 @@ TEST(SampledDiscretisation, TheBottomOfTheDipKeepsItsValue) {
   double lowest_halved = INFINITY;
   for (size_t k = 1; k < halved.size(); ++k) lowest_halved = std::min(lowest_halved, halved[k].piece_bound.velocity);
   EXPECT_EQ(lowest_cap, lowest_halved);
+}
+
+// A spline span is halved at parameter midpoints whose arc length is a Gauss integral from the
+// piece's start (step 4): every station must still lie where the span's own arc-length
+// inversion puts its s, for a span whose parameter speed varies (a Hermite span with unequal
+// end tangents) and for a rational one.
+TEST(SampledDiscretisation, SplineSpanStationsLieAtTheirArcLength) {
+  Eigen::Matrix4d rational = Eigen::Matrix4d::Zero();
+  rational.col(0) << 0.0, 0.0, 0.0, 1.0;  // H = (w·x, w·y, w·z, w), w = 1 + u², a bent curve
+  rational.col(1) << 0.3, 0.1, 0.0, 0.0;
+  rational.col(2) << 0.0, 0.4, 0.0, 1.0;
+  rational.col(3) << 0.1, 0.0, 0.05, 0.0;
+  const geometry::PolynomialSpan spans[] = {
+      geometry::PolynomialSpan::hermite(Vec3(0, 0, 0), Vec3(0.4, 0.2, 0), Vec3(0.1, 0.9, 0), Vec3(1.5, -0.8, 0.1),
+                                        1.0),
+      geometry::PolynomialSpan(rational, 1.0)};
+  // A bound falling with the curvature (as the curvature constraint's sqrt(a/κ)).
+  auto limits = [](const CurvePoint& p) {
+    LocalLimits l;
+    l.bound.velocity = std::min(kFeed, std::sqrt(500.0 / std::max(p.curvature, 1e-9)));
+    l.ramp = kRamp;
+    return l;
+  };
+  for (const auto& span : spans) {
+    std::vector<Station> out;
+    ASSERT_TRUE(discretise_element(span, span.length(), 0.01, DiscretisationRule{}, limits, out));
+    ASSERT_GT(out.size(), 4u);
+    EXPECT_EQ(out.front().s, 0.0);
+    EXPECT_EQ(out.back().s, span.length());
+    for (size_t k = 1; k < out.size(); ++k) {
+      EXPECT_GT(out[k].s, out[k - 1].s);
+      EXPECT_LT((out[k].point.position - span.at(out[k].s).position).norm(), 1e-10) << "station " << k;
+      EXPECT_LT((out[k].point.tangent - span.at(out[k].s).tangent).norm(), 1e-9) << "station " << k;
+    }
+  }
 }
 
 }  // namespace

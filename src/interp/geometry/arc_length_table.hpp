@@ -48,6 +48,20 @@ class ArcLengthTable {
   template <typename SpeedFn>
   double parameter_at(const SpeedFn& speed, double s) const;
   size_t size() const { return size_; }
+  // Arc length from the start to parameter u (clamped): the accepted interval's start plus one
+  // 5-node integral inside it, as accurate as the table (what parameter_at's Newton steps use).
+  template <typename SpeedFn>
+  double length_at(const SpeedFn& speed, double u_at) const {
+    if (size_ < 2 || u_at <= u(0)) return 0.0;
+    if (u_at >= u(size_ - 1)) return length();
+    size_t k = 0;  // last k with u(k) <= u_at
+    for (size_t n = size_ - 1; n > 1;) {
+      const size_t half = n / 2;
+      if (u(k + half) <= u_at) k += half;
+      n -= half;
+    }
+    return s(k) + gauss5(speed, u(k), u_at);
+  }
 
   // 5-node Gauss-Legendre integral of speed over [a, b]. A speed that offers
   // `five(u, out)` (the five nodes' speeds at once, the same values as five calls) is asked

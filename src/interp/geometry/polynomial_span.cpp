@@ -124,6 +124,10 @@ double PolynomialSpan::arc_length_between(double u0, double u1) const {
   return with_speed([&](const auto& speed) { return ArcLengthTable::gauss5(speed, u0, u1); });
 }
 
+double PolynomialSpan::arc_length_at(double u) const {
+  return with_speed([&](const auto& speed) { return table_.length_at(speed, u); });
+}
+
 double PolynomialSpan::parameter_at(double s) const {
   return with_speed([&](const auto& speed) { return table_.parameter_at(speed, s); });
 }

@@ -53,6 +53,8 @@ class PolynomialSpan final : public Curve {
   double arc_length_between(double u0, double u1) const;
   double parameter_end() const { return u_end_; }
   double parameter_at(double s) const;
+  // Arc length from the start to parameter u (the inverse of parameter_at, without Newton).
+  double arc_length_at(double u) const;
   // Turns parametric derivatives into the arc-length quantities of a CurvePoint.
   static CurvePoint by_arc_length(const ParametricDerivatives& d);
 
