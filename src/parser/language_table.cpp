@@ -64,7 +64,7 @@ constexpr std::array kStatements{
     Row{"IF cond GOTOx target", M, "conditional jump; several in one block: the first whose condition holds (GOTOF :30 jumps to main block 30)"},
     Row{"CASE expr OF c GOTOx l ... DEFAULT GOTOx l", M, "multi-way jump"},
     Row{"REPEAT start [end] P=n / REPEATB label P=n / ENDLABEL:", M, "program section repetition"},
-    Row{"CALL BLOCK start TO end", M, "the program section between the labels runs once (as REPEAT start end)"},
+    Row{"CALL BLOCK start TO end", M, "the program section between the labels runs once (as REPEAT start end); a label may be a STRING variable or constant"},
     Row{"CALL \"PROG\" BLOCK start TO end", M, "that section of program PROG runs, then the call returns"},
     Row{"REDEF name attributes", M, "new access rights, preprocessing stop, initialisation or limits of a name (definition files): accepted, nothing changes"},
     Row{"SETAL(n[, text])", M, "cycle/user alarm: 62000-62999 and 67000-67999 only display (warning), the rest of 60000-69999 stop the program"},

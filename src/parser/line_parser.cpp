@@ -375,16 +375,21 @@ void LineParser::parse_if(ParsedLine& out) {
   expect_end();
 }
 
-// "<start label> TO <end label>" of CALL [..] BLOCK, to the end of the line.
-void LineParser::parse_section_labels(std::string_view& start, std::string_view& end) {
-  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "label expected after CALL BLOCK");
-  start = peek().text;
-  ++pos_;
+// "<start label> TO <end label>" of CALL [..] BLOCK, to the end of the line. Each is a label, a
+// STRING variable holding one (decided when the line runs: ProgramLoader::section_label) or a
+// string constant (Job Planning, "Indirect call of a program part": the labels are of type STRING).
+void LineParser::parse_section_labels(ParsedLine& out, std::string_view& start, std::string_view& end) {
+  out.call_block = true;
+  auto label = [&](const char* expected) {
+    if (peek().kind != TokenKind::Name && peek().kind != TokenKind::String) throw LineError(12080, peek().column, expected);
+    const std::string_view text = peek().text;
+    ++pos_;
+    return text;
+  };
+  start = label("label expected after CALL BLOCK");
   if (!(peek().kind == TokenKind::Name && peek().text == "TO")) throw LineError(12080, peek().column, "TO expected in CALL BLOCK");
   ++pos_;
-  if (peek().kind != TokenKind::Name) throw LineError(12080, peek().column, "end label expected after TO");
-  end = peek().text;
-  ++pos_;
+  end = label("end label expected after TO");
   expect_end();
 }
 
@@ -443,7 +448,7 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     out.repeat_one_block = false;
     pos_ += 2;
     out.target.column = peek().column;
-    parse_section_labels(out.call_name, out.end_label);
+    parse_section_labels(out, out.call_name, out.end_label);
     return true;
   }
   if (w == "CALL") {
@@ -465,7 +470,7 @@ std::optional<bool> LineParser::parse_call(ParsedLine& out, std::string_view w) 
     // call of a program part" (CALL BLOCK)).
     if (peek().kind == TokenKind::Name && peek().text == "BLOCK") {
       ++pos_;
-      parse_section_labels(out.section_label, out.end_label);
+      parse_section_labels(out, out.section_label, out.end_label);
       return true;
     }
     // Optional passes: CALL "SUB" P3

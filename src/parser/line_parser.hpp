@@ -33,7 +33,7 @@ class LineParser {
   bool parse_for(ParsedLine& out);
   bool parse_extcall(ParsedLine& out);
   std::optional<bool> parse_call(ParsedLine& out, std::string_view w);
-  void parse_section_labels(std::string_view& start, std::string_view& end);
+  void parse_section_labels(ParsedLine& out, std::string_view& start, std::string_view& end);
   void parse_redef(ParsedLine& out);
   void parse_if(ParsedLine& out);
   void parse_words(ParsedLine& out);

@@ -512,8 +512,8 @@ void ProgramLoader::execute_repeat_section() {
   double passes = 1;
   if (parsed_.passes != kNoExpr) passes = eval(parsed_.passes);
   if (!(passes >= 0 && passes <= 9999)) throw LineError(12160, parsed_.target.column, "P must be 0..9999");
-  const std::string start_label(parsed_.call_name);
-  const std::string end_label(parsed_.end_label);
+  const std::string start_label = parsed_.call_block ? section_label(parsed_.call_name) : std::string(parsed_.call_name);
+  const std::string end_label = parsed_.call_block ? section_label(parsed_.end_label) : std::string(parsed_.end_label);
   const bool one_block = parsed_.repeat_one_block;
   const uint32_t column = parsed_.target.column;
   const LinePosition repeat_line = position_;
@@ -645,6 +645,14 @@ bool ProgramLoader::check_endless_loop(const std::string& awaited) {
       return true;
   }
   return false;
+}
+
+// A label of CALL [..] BLOCK as written: the value of a STRING variable of that name, else the
+// label itself (a string constant's text, in upper case as labels are read).
+std::string ProgramLoader::section_label(std::string_view written) {
+  if (const Variable* v = find_variable(written); v && v->type() == DataType::String && v->rank() == 0)
+    return upper_ascii(v->get(0).text);
+  return upper_ascii(written);
 }
 
 void ProgramLoader::run_program_section(const std::string& start_label, const std::string& end_label, uint32_t column) {

@@ -126,6 +126,7 @@ struct ParsedLine {
   std::string_view end_label;     // REPEAT start end, CALL "PROG" BLOCK start TO end: the end label
   std::string_view section_label;  // CALL "PROG" BLOCK start TO end: the start label
   bool repeat_one_block = false;  // REPEATB
+  bool call_block = false;        // CALL [..] BLOCK: its labels may be STRING variables
   bool proc_save = false;         // PROC ... SAVE
   ExprIndex passes = kNoExpr;     // REPEAT ... P=n
   std::string_view macro_text;    // DEFINE name AS <text> (as written)
@@ -152,6 +153,7 @@ struct ParsedLine {
     end_label = {};
     section_label = {};
     repeat_one_block = false;
+    call_block = false;
     proc_save = false;
     passes = kNoExpr;
     macro_text = {};

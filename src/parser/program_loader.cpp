@@ -285,10 +285,13 @@ bool ProgramLoader::execute_line(Block& out) {
           name = v.text;
         } else if (const Variable* v = find_variable(name); v && v->type() == DataType::String && v->rank() == 0)
           name = v->get(v->element({}, parsed_.target.column)).text;
+        // The section's labels are read in the caller (they may be its STRING variables).
+        const bool section = !parsed_.section_label.empty();
+        const std::string start_label = section ? section_label(parsed_.section_label) : std::string();
+        const std::string end_label = section ? section_label(parsed_.end_label) : std::string();
         const size_t levels = frames_.size();
         call_program(name, passes, parsed_.target.column);
-        if (!parsed_.section_label.empty() && frames_.size() > levels)
-          run_program_section(std::string(parsed_.section_label), std::string(parsed_.end_label), parsed_.target.column);
+        if (section && frames_.size() > levels) run_program_section(start_label, end_label, parsed_.target.column);
         return false;
       }
       case Statement::Goto:

@@ -171,6 +171,7 @@ class ProgramLoader {
   void execute_case();
   void execute_repeat_section();
   void run_program_section(const std::string& start_label, const std::string& end_label, uint32_t column);
+  std::string section_label(std::string_view written);
   // The section START:END of `program`, or (empty) of the program that called the running one:
   // a contour cycle's contour.
   void call_contour_section(const std::string& program, const std::string& start_label, const std::string& end_label,
