@@ -87,7 +87,11 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
       }
       return std::nullopt;
     case 12: return s.exact_stop_window - 600;  // G601 G602 G603
+    case 16: return static_cast<double>(s.contour_feed) + 1;  // CFC CFTCP CFIN
+    case 17: return s.contour_approach ? 2 : 1;                // NORM KONT (KONTT, KONTC: modelled as KONT)
     case 18: return s.intersection_corners ? 2 : 1;
+    case 23: return s.collision_detection ? 2 : 1;             // CDOF CDON (CDOF2: modelled as CDOF)
+    case 29: return static_cast<double>(s.diameter.channel) + 1;  // DIAMOF DIAMON DIAM90 DIAMCYCOF
     case 21: return s.accel == AccelProfile::Soft ? 2 : 1;  // BRISK SOFT (DRIVE)
     case 30: return static_cast<double>(s.compressor) + 1;   // COMPOF COMPON COMPCURV COMPCAD COMPSURF
     case 59: return static_cast<double>(s.dynamic_group) + 1;  // DYNNORM DYNPOS DYNROUGH DYNSEMIFIN DYNFINISH DYNPREC

@@ -340,14 +340,19 @@ Support g_code_support(int64_t g) {
 }
 
 // G groups whose members are named commands, in the order of their internal numbers (PGA
-// Fundamentals, "List of G functions": group 21 acceleration profile, 30 compressor, 59
-// dynamic response modes).
+// Fundamentals, "List of G functions": group 16 feed on curves with TRC, 17 approach and
+// retraction with TRC, 21 acceleration profile, 23 collision monitoring, 29 radius/diameter,
+// 30 compressor, 59 dynamic response modes).
 struct NamedGGroup {
   int group;
   std::array<std::string_view, 6> names;  // empty: end of the list
 };
 constexpr std::array kNamedGGroups{
+    NamedGGroup{16, {"CFC", "CFTCP", "CFIN"}},
+    NamedGGroup{17, {"NORM", "KONT", "KONTT", "KONTC"}},
     NamedGGroup{21, {"BRISK", "SOFT", "DRIVE"}},
+    NamedGGroup{23, {"CDOF", "CDON", "CDOF2"}},
+    NamedGGroup{29, {"DIAMOF", "DIAMON", "DIAM90", "DIAMCYCOF"}},
     NamedGGroup{30, {"COMPOF", "COMPON", "COMPCURV", "COMPCAD", "COMPSURF"}},
     NamedGGroup{59, {"DYNNORM", "DYNPOS", "DYNROUGH", "DYNSEMIFIN", "DYNFINISH", "DYNPREC"}},
 };
