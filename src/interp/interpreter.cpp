@@ -514,13 +514,12 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
   }
   // A chain of thread blocks of one kind runs on without a new run-up; G331 -> G332 reverses.
   if (thread_chain_ == state_.motion) return;
-  if (profile_.spindle_ramp_time_s <= 0) {
-    // Without a ramp time the spindle's braking and reversal in position control (the axis
-    // follows it) costs nothing: named, not silent (docs/controller-state.md "Oriented spindle stop").
-    if (state_.motion == MotionMode::TappingRetract)
-      warn_once(ctx, "G332: the spindle's reversal at the tapping depth is not timed (profile spindle_ramp_time_s is 0)", 0);
-    return;
-  }
+  // Rigid tapping (G331/G332): the axis follows the spindle's ramps in position control
+  // (MD35210, planned as the lead axis's acceleration: limit_tapping_acceleration), the reversal
+  // at the depth included; nothing waits. The run-up dwell is for threads cut with the spindle
+  // in speed control (G33, G34, G35).
+  if (state_.motion == MotionMode::Tapping || state_.motion == MotionMode::TappingRetract) return;
+  if (profile_.spindle_ramp_time_s <= 0) return;
   PathElement e = element_template(ctx, ElementKind::Dwell);
   e.dwell_s = profile_.spindle_ramp_time_s;
   e.label = "spindle ramp";

@@ -235,6 +235,7 @@ class Interpreter {
   // A thread or tapping block: takes its lead I/J/K and, unless it continues a chain of the
   // same kind, emits the profile's spindle_ramp_time as a dwell before it.
   void start_thread_block(BlockContext& ctx);
+  void limit_tapping_acceleration(PathElement& e) const;
   // Raises the first alarm among the tool notices, reports the warnings.
   void report_tool_notices(const BlockContext& ctx, const std::vector<ToolNotice>& notices, uint32_t column);
   void program_tool(BlockContext& ctx, const std::string& id, uint32_t column);

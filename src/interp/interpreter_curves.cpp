@@ -83,6 +83,7 @@ PathElement Interpreter::build_line(BlockContext& ctx, const Vector3d& target) {
   e.label.assign(e.rapid ? std::string_view("G0") : motion_mode_name(state_.motion));
   e.curve = line_curve(position_, target);
   if (!e.rapid) e.feed_mm_s = feed_mm_s(ctx, e.path_length(), target - position_);
+  if (state_.motion == MotionMode::Tapping || state_.motion == MotionMode::TappingRetract) limit_tapping_acceleration(e);
   return e;
 }
 

@@ -362,4 +362,23 @@ double Interpreter::spindle_speed(const BlockContext& ctx, const Eigen::Vector3d
   return constant_cutting_speed_rpm(speed_mm_min, x0, x1, spindle_min_rpm_, max_rpm);
 }
 
+// G331/G332 interpolate the lead axis with the spindle in position control: the axis moves one
+// lead per revolution, so it accelerates as the spindle does times the lead, and the spindle's
+// acceleration in position control is MD35210 GEAR_STEP_POSCTRL_ACCEL (docs/controller-state.md
+// "Feeds", G331/G332). The element's ACC factor of the lead axis is lowered so that the
+// planner's acceleration of that axis (MD32300 x dynamic group x SOFT factor x ACC) is at most
+// lead x MD35210; the braking at the tapping depth and the run-up of G332 (the reversal) follow.
+void Interpreter::limit_tapping_acceleration(PathElement& e) const {
+  const double spindle = profile_.spindle_posctrl_accel_rev_s2;
+  const int k = state_.thread_lead_axis;
+  if (!(spindle > 0) || !(state_.thread_lead_mm > 0) || k < 0 || k > 2) return;
+  const size_t axis = static_cast<size_t>(k);
+  const auto& group = profile_.dynamic_groups[static_cast<size_t>(state_.dynamic_group)];
+  const double mode = state_.accel == AccelProfile::Soft ? profile_.soft_accel_factor : 1.0;
+  const double axis_accel = profile_.axes[axis].max_accel_mm_s2 * group.max_ax_accel * mode;
+  if (!(axis_accel > 0)) return;
+  float& factor = e.dynamics.limits.accel[axis];
+  factor = std::min(factor, static_cast<float>(state_.thread_lead_mm * spindle / axis_accel));
+}
+
 }  // namespace drycut::interp

@@ -16,6 +16,12 @@ size_t count_kind(const RunResult& r, ElementKind kind) {
   return n;
 }
 
+size_t count_spindle_ramps(const RunResult& r) {
+  size_t n = 0;
+  for (const auto& e : r.sink.elements) n += e.kind == ElementKind::Dwell && e.label == "spindle ramp";
+  return n;
+}
+
 TEST(Units, MetricMachineG70ScalesGeometryNotFeed) {
   // G70 X1 = 25.4 mm, F60 stays mm/min (1 mm/s); G700 F60 is in/min = 25.4 mm/s; G71 without
   // a new F keeps the F as programmed under G700 (25.4 mm/s).
@@ -127,17 +133,28 @@ TEST(Feeds, VariableLeadThreads) {
 }
 
 TEST(Feeds, TappingAndSpindleRampDwells) {
-  // spindle_ramp_time 0.5 s: G331 in and G332 out each run up (reversal); two chained G33 blocks
-  // one run-up. G331 K1 at S500: 500 mm/min.
+  // spindle_ramp_time 0.5 s: two chained G33 blocks one run-up. G331 K1 at S500: 500 mm/min.
+  // Rigid tapping follows the spindle's ramps in position control instead (MD35210): no dwell,
+  // the Z axis's acceleration on the tapping blocks is lead · MD35210 = 1 mm · 30 rev/s² (until
+  // 2026-11-29 G331 in and G332 out each got the run-up dwell, and the axis its own acceleration).
   auto p = test_profile();
   p.spindle_ramp_time_s = 0.5;
+  p.spindle_posctrl_accel_rev_s2 = 30;
   auto tap = run_program("S500 M3\nG0 Z5\nG331 Z-10 K1\nG332 Z5 K1\nM30\n", p);
   ASSERT_FALSE(tap->alarm) << tap->alarm->format();
-  EXPECT_EQ(count_kind(*tap, ElementKind::Dwell), 2u);
-  EXPECT_NEAR(tap->sink.motions()[1].feed_mm_s, 500.0 / 60, 1e-12);
+  EXPECT_EQ(count_spindle_ramps(*tap), 0u);
+  const auto motions = tap->sink.motions();
+  ASSERT_EQ(motions.size(), 3u);
+  EXPECT_NEAR(motions[1].feed_mm_s, 500.0 / 60, 1e-12);
+  for (size_t k : {1u, 2u}) {
+    const double z_accel = p.axes[2].max_accel_mm_s2 * p.dynamic_groups[0].max_ax_accel * motions[k].dynamics.limits.accel[2];
+    EXPECT_NEAR(z_accel, 30.0, 1e-4) << k;
+    EXPECT_EQ(motions[k].dynamics.limits.accel[0], 1.0f);
+  }
+  EXPECT_EQ(motions[0].dynamics.limits.accel[2], 1.0f);  // the G0 before it keeps the axis's
   auto chain = run_program("S500 M3\nG0 Z5\nG33 Z0 K1\nZ-10\nM30\n", p);
   ASSERT_FALSE(chain->alarm) << chain->alarm->format();
-  EXPECT_EQ(count_kind(*chain, ElementKind::Dwell), 1u);
+  EXPECT_EQ(count_spindle_ramps(*chain), 1u);
 }
 
 TEST(Feeds, ConstantCuttingSpeedFollowsTheDiameter) {
