@@ -1,12 +1,12 @@
 #include "interp/frame.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "interp/geometry/arc_curve.hpp"
+#include "interp/geometry/degrees.hpp"
 #include "interp/geometry/line_curve.hpp"
 
 namespace drycut::interp {
@@ -16,10 +16,17 @@ using Eigen::Vector3d;
 
 namespace {
 
-double radians(double deg) { return deg * std::numbers::pi / 180.0; }
-
+// The rotation about one axis (right-handed), with exact quarter and twelfth turns
+// (geometry/degrees.hpp).
 Matrix3d axis_rotation(int axis, double angle_deg) {
-  return Eigen::AngleAxisd(radians(angle_deg), Vector3d::Unit(axis)).toRotationMatrix();
+  const auto [s, c] = geometry::sin_cos_degrees(angle_deg);
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;  // the plane turned: (Y, Z), (Z, X), (X, Y)
+  Matrix3d m = Matrix3d::Identity();
+  m(i, i) = c;
+  m(i, j) = -s;
+  m(j, i) = s;
+  m(j, j) = c;
+  return m;
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #include "interp/polar_coordinates.hpp"
 
 #include <cmath>
-#include <numbers>
+
+#include "interp/geometry/degrees.hpp"
 
 namespace drycut::interp {
 
@@ -10,10 +11,10 @@ using Eigen::Vector3d;
 namespace {
 
 Vector3d polar_offset(double angle_deg, double radius, const PlaneIndices& plane) {
-  const double a = angle_deg * std::numbers::pi / 180.0;
+  const auto [s, c] = geometry::sin_cos_degrees(angle_deg);  // AP=90: exactly on the axis
   Vector3d v = Vector3d::Zero();
-  v[plane.first] = radius * std::cos(a);
-  v[plane.second] = radius * std::sin(a);
+  v[plane.first] = radius * c;
+  v[plane.second] = radius * s;
   return v;
 }
 
