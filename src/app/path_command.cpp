@@ -4,6 +4,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/output_file.hpp"
 #include "app/program_pipeline.hpp"
 #include "report/element_listing.hpp"
 #include "report/path_csv_writer.hpp"
@@ -39,6 +40,7 @@ void register_path(CLI::App& app) {
       std::FILE* out = stdout;
       std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(nullptr, &std::fclose);
       if (!options->csv.empty()) {
+        check_output_path(options->csv, options->program.program);
         file.reset(std::fopen(options->csv.c_str(), "w"));
         if (!file) throw UsageError("cannot write " + options->csv);
         out = file.get();
@@ -49,6 +51,7 @@ void register_path(CLI::App& app) {
       PipelineOutcome outcome = options->tool_centre ? run_program_tool_centre(options->program, profile, *writer)
                                                      : run_program(options->program, profile, *writer);
       report::mark_incomplete(out, report::run_completion(outcome.diagnostics.items(), outcome.alarm));
+      check_written(out, options->csv.empty() ? "standard output" : options->csv);
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut path: %s\n", e.what());

@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/output_file.hpp"
 #include "interp/block_compressor.hpp"
 #include "interp/corner_smoothing.hpp"
 #include "interp/cutter_compensation.hpp"
@@ -109,6 +110,7 @@ void register_report(CLI::App& app) {
       const machine::MachineProfile profile = load_machine(o->program);
       const std::optional<ReferenceContour> reference = make_reference(o->curve);
       // Open the output first: a bad path should fail before a long run, not after it.
+      check_output_path(o->output, o->program.program);
       std::ofstream out(o->output, std::ios::binary);
       if (!out) throw UsageError("cannot write " + o->output);
       ReportRun run = run_for_report(o->program, profile, reference ? &*reference : nullptr, true);

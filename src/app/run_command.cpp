@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/output_file.hpp"
 #include "app/program_pipeline.hpp"
 #include "motion/planner.hpp"
 #include "report/html_element_tap.hpp"
@@ -139,6 +140,8 @@ void register_run(CLI::App& app) {
       const bool lines = !o->ndjson_file.empty();
       const std::string& json_path = lines ? o->ndjson_file : o->json_file;
       if (json_path == "-" && o->trace_file == "-") throw UsageError("--json/--ndjson and --trace cannot both be -");
+      check_output_path(json_path, o->program.program);
+      check_output_path(o->trace_file, o->program.program);
       if (!json_path.empty()) json = open_output(json_path);
       if (!o->trace_file.empty()) trace = open_output(o->trace_file);
 
@@ -175,6 +178,9 @@ void register_run(CLI::App& app) {
       print_summary(text_out, *o, profile, summary, completion, report::untimed_cycles(outcome.diagnostics.items()));
       compression.print(text_out);
       if (span) print_span(text_out, events, *span);
+      check_written(json.get(), json_path == "-" ? "standard output" : json_path);
+      check_written(trace.get(), o->trace_file == "-" ? "standard output" : o->trace_file);
+      check_written(stdout, "standard output");
       throw ExitRequest{report_outcome(outcome)};
     } catch (const UsageError& e) {
       std::fprintf(stderr, "drycut run: %s\n", e.what());
