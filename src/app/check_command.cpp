@@ -12,6 +12,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/interruption.hpp"
 #include "app/program_pipeline.hpp"
 #include "interp/path_element.hpp"
 #include "machine/alarm.hpp"
@@ -82,7 +83,10 @@ void register_check(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("check", "Interpret a part program without planning it; report alarms");
   add_program_options(*cmd, opt->program);
   cmd->add_flag("--json", opt->json, "Print a JSON object instead of the summary line");
-  cmd->callback([opt] { throw ExitRequest{run_check(*opt)}; });
+  cmd->callback([opt] {
+    install_interrupt_handlers();
+    throw ExitRequest{run_check(*opt)};
+  });
 }
 
 }  // namespace drycut::app

@@ -4,6 +4,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/interruption.hpp"
 #include "app/output_file.hpp"
 #include "app/program_pipeline.hpp"
 #include "report/element_listing.hpp"
@@ -35,6 +36,7 @@ void register_path(CLI::App& app) {
   cmd->add_flag("--elements", options->elements,
                 "List the element stream (what the interpreter hands the planner) instead of samples");
   cmd->callback([options] {
+    install_interrupt_handlers();
     try {
       const machine::MachineProfile profile = load_machine(options->program);
       std::FILE* out = stdout;

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/exit_code.hpp"
+#include "app/interruption.hpp"
 #include "app/loader_setup.hpp"
 #include "interp/controller_state_view.hpp"
 #include "app/standard_cycles.hpp"
@@ -105,6 +106,9 @@ PipelineOutcome run_program(const ProgramOptions& options, const machine::Machin
     auto progress = report::ProgressDisplay::for_stderr(options.quiet);
     while (loader.next(block)) {
       progress.update(loader.blocks_executed());
+      if (interrupt_requested())
+        throw AlarmError(make_alarm(990022, "SIGINT or SIGTERM",
+                                    SourceLocation{block.file ? *block.file : std::string(), block.line, 0}, block.text));
       interpreter.execute(block);
       if (interpreter.ended()) break;
     }

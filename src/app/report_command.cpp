@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/interruption.hpp"
 #include "app/output_file.hpp"
 #include "interp/block_compressor.hpp"
 #include "interp/corner_smoothing.hpp"
@@ -106,6 +107,7 @@ void register_report(CLI::App& app) {
   cmd->add_option("--dips", o->annotated_dips, "Worst dips marked on the plots")->default_val(10);
   add_curve_options(*cmd, o->curve);
   cmd->callback([o] {
+    install_interrupt_handlers();
     try {
       const machine::MachineProfile profile = load_machine(o->program);
       const std::optional<ReferenceContour> reference = make_reference(o->curve);

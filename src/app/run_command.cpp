@@ -10,6 +10,7 @@
 
 #include "app/commands.hpp"
 #include "app/exit_code.hpp"
+#include "app/interruption.hpp"
 #include "app/output_file.hpp"
 #include "app/program_pipeline.hpp"
 #include "motion/planner.hpp"
@@ -128,6 +129,7 @@ void register_run(CLI::App& app) {
   cmd->add_option("--span", o->span,
                   "Time between two events FROM..TO (start, after_m0, after_dwell, contour_start, contour_end, end)");
   cmd->callback([o] {
+    install_interrupt_handlers();
     try {
       std::optional<report::RunSpan> span;
       try {

@@ -81,6 +81,7 @@ constexpr std::array kCatalog{
     AlarmInfo{990019, S::Warning, "G group 15 (feed type, spindle speed mode) changed what F or S mean", A::Drycut},
     AlarmInfo{990020, S::Alarm, "Path element without valid geometry (planner input)", A::Drycut},
     AlarmInfo{990021, S::Warning, "Cycle alarm not raised: it follows from an input, PLC signal or measured value a dry run does not know", A::Drycut},
+    AlarmInfo{990022, S::Alarm, "Run interrupted (Ctrl-C or a termination signal): stopped before this block", A::Drycut},
 };
 
 }  // namespace
