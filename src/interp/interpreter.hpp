@@ -264,6 +264,7 @@ class Interpreter {
   bool hold_contour_angle(BlockContext& ctx, bool has_axis);
   void run_to_contour_corner(BlockContext& ctx);
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
+  void check_arc_limits(const BlockContext& ctx, const geometry::Curve& curve);
   // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
   // word is none of them.
   bool apply_transformation_command(const parser::CommandWord& c);

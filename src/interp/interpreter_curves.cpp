@@ -2,7 +2,9 @@
 // system and mapped through the frame) and spline runs.
 #include <cmath>
 #include <numbers>
+#include <typeinfo>
 
+#include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/interpreter_block.hpp"
@@ -50,7 +52,33 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   attach_cutting_speed_law(ctx, e);
   position_ = e.curve->end();
   if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
+  if (arc) check_arc_limits(ctx, *e.curve);
   emit(std::move(e));
+}
+
+// A circle reaches beyond its end points where an axis's coordinate turns: at the angles
+// α_i + k·π of each axis i inside the sweep (the circle's coordinate i is r·R_i·cos(φ − α_i),
+// motion/element_discretisation.hpp). The control monitors the software limits along the path
+// (alarm 10720), so those points are checked as the end points are: a G2 whose end lies inside
+// the limits but whose half circle leaves them is refused, not passed.
+void Interpreter::check_arc_limits(const BlockContext& ctx, const geometry::Curve& curve) {
+  if (typeid(curve) != typeid(geometry::ArcCurve)) return;
+  const auto& arc = static_cast<const geometry::ArcCurve&>(curve);
+  const double sweep = arc.sweep();
+  if (sweep == 0.0 || arc.radius() <= 0.0) return;
+  const double lo = std::min(arc.start_angle(), arc.start_angle() + sweep);
+  const double hi = std::max(arc.start_angle(), arc.start_angle() + sweep);
+  for (int i = 0; i < 3; ++i) {
+    if (std::hypot(arc.first_axis()[i], arc.second_axis()[i]) < 1e-12) continue;  // along the normal
+    const double alpha = std::atan2(arc.second_axis()[i], arc.first_axis()[i]);
+    for (double phi = alpha + std::ceil((lo - alpha) / std::numbers::pi) * std::numbers::pi; phi < hi;
+         phi += std::numbers::pi) {
+      if (phi <= lo) continue;
+      const Vector3d p = arc.centre() + arc.radius() * (std::cos(phi) * arc.first_axis() + std::sin(phi) * arc.second_axis()) +
+                         arc.axial_travel() * (phi - arc.start_angle()) / sweep * arc.normal();
+      check_limits(ctx, p);
+    }
+  }
 }
 
 void Interpreter::attach_cutting_speed_law(BlockContext& ctx, PathElement& e) {
