@@ -232,8 +232,9 @@ class Interpreter {
   double geometry_unit() const;  // mm per unit of positions (G70/G71/G700/G710)
   double cutting_speed_mm_min(double speed) const;  // G96 S / SVC (m/min or ft/min) in mm/min
   double feed_unit() const;      // mm per length unit of F (G700/G710, else the base unit MD10240)
-  // A thread or tapping block: takes its lead I/J/K and, unless it continues a chain of the
-  // same kind, emits the profile's spindle_ramp_time as a dwell before it.
+  // A thread or tapping block: takes its lead I/J/K and, for a thread (G33..G35) that does not
+  // continue a chain of the same kind, emits the profile's spindle_ramp_time as a dwell before
+  // it. Rigid tapping instead limits the lead axis's acceleration (limit_tapping_acceleration).
   void start_thread_block(BlockContext& ctx);
   void limit_tapping_acceleration(PathElement& e) const;
   // Raises the first alarm among the tool notices, reports the warnings.

@@ -19,7 +19,7 @@ inline SinCos sin_cos_degrees(double degrees) {
     const double h = std::sqrt(3.0) / 2;  // sin 60°
     constexpr double kHalf = 0.5;
     const double sines[12] = {0, kHalf, h, 1, h, kHalf, 0, -kHalf, -h, -1, -h, -kHalf};
-    const int k = static_cast<int>(r) / 30;
+    const int k = static_cast<int>(r) / 30 % 12;  // r is 360 for a tiny negative angle
     return {sines[k], sines[(k + 3) % 12]};  // cos φ = sin(φ + 90°)
   }
   const double a = degrees * std::numbers::pi / 180.0;

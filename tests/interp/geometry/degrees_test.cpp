@@ -16,7 +16,7 @@ TEST(Degrees, QuarterTurnsAndTwelfthsAreExact) {
   const Case cases[] = {{0, 0, 1},       {30, 0.5, h},    {60, h, 0.5},    {90, 1, 0},      {120, h, -0.5},
                         {150, 0.5, -h},  {180, 0, -1},    {210, -0.5, -h}, {240, -h, -0.5}, {270, -1, 0},
                         {300, -h, 0.5},  {330, -0.5, h},  {-90, -1, 0},    {450, 1, 0},     {-270, 1, 0},
-                        {720, 0, 1},     {-180, 0, -1}};
+                        {720, 0, 1},     {-180, 0, -1},   {-1e-14, 0, 1}};  // fmod + 360 rounds to 360
   for (const auto& c : cases) {
     const SinCos sc = sin_cos_degrees(c.deg);
     EXPECT_EQ(sc.sin, c.sin) << c.deg;
