@@ -51,13 +51,22 @@ std::vector<Tool> load_tool_table_csv(const std::string& text, const std::string
   std::istringstream in(text);
   std::string line;
   std::map<std::string, size_t> column;
+  size_t header_fields = 0;
   std::vector<Tool> tools;
   for (int line_no = 1; std::getline(in, line); ++line_no) {
     const std::string where = origin + ":" + std::to_string(line_no);
+    // Excel's "CSV UTF-8" starts the file with a byte order mark.
+    if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     line = trim(line);
     if (line.empty() || line.front() == '#') continue;
     const auto cells = split(line);
+    // A row with fewer or more fields than the header has lost or gained a value: taking the rest
+    // as empty read a missing radius as 0, silently.
+    if (!column.empty() && cells.size() != header_fields)
+      throw ProfileError(where + ": " + std::to_string(cells.size()) + " fields, the header has " +
+                         std::to_string(header_fields));
     if (column.empty()) {
+      header_fields = cells.size();
       for (size_t i = 0; i < cells.size(); ++i) {
         if (std::find(kColumns.begin(), kColumns.end(), cells[i]) == kColumns.end())
           throw ProfileError(where + ": unknown column '" + cells[i] +

@@ -33,6 +33,22 @@ TEST(ToolTableCsv, OneRowPerEdgeMergedByNumber) {
   EXPECT_DOUBLE_EQ(tools[1].edges[0].radius_mm, 0.0);
 }
 
+TEST(ToolTableCsv, ARowMustHaveTheHeadersFields) {
+  // A missing value is an empty field, not a short row: "1,FR,1,10" under five columns lost its
+  // radius and read 0; an extra field is refused too. Empty fields still take the defaults.
+  EXPECT_EQ(csv_error("number,name,d,length_mm,radius_mm\n1,FR,1,10\n"), "t.csv:2: 4 fields, the header has 5");
+  EXPECT_EQ(csv_error("number,name,d,length_mm,radius_mm\n1,FR,1,10,2,3\n"), "t.csv:2: 6 fields, the header has 5");
+  EXPECT_EQ(csv_error("number,name,d,length_mm,radius_mm\n1,FR,1,10,\n"), "no error");
+}
+
+TEST(ToolTableCsv, AByteOrderMarkBeforeTheHeaderIsSkipped) {
+  // Excel's "CSV UTF-8" writes one; the first column was read as "\ufeffnumber".
+  const auto tools = load_tool_table_csv("\xEF\xBB\xBFnumber,d,radius_mm\n3,1,4\n", "t.csv");
+  ASSERT_EQ(tools.size(), 1u);
+  EXPECT_EQ(tools[0].number, 3);
+  EXPECT_DOUBLE_EQ(tools[0].edges[0].radius_mm, 4.0);
+}
+
 TEST(ToolTableCsv, TeethColumnIsOptional) {
   // teeth: the number of teeth $TC_DPNT for G95 FZ; empty or absent = 0 (not known).
   const auto tools = load_tool_table_csv("number,d,radius_mm,teeth\n1,1,5,4\n1,2,5,\n", "t.csv");
