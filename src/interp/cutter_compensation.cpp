@@ -353,11 +353,59 @@ bool CutterCompensation::cut_out_is_defective(size_t earlier, size_t later, cons
   // (closed contours, loops at another depth), and the control does not cut them.
   const OffsetPiece& first = *window_[earlier].piece;
   const OffsetPiece& last = *window_[later].piece;
-  if (first.runs_backwards(crossing.u_earlier, first.u_end())) return true;
-  if (last.runs_backwards(last.u_begin(), crossing.u_later)) return true;
-  for (size_t i = earlier + 1; i < later; ++i)
-    if (window_[i].piece && (window_[i].gap_bridge || window_[i].piece->runs_backwards())) return true;
-  return false;
+  bool defect = first.runs_backwards(crossing.u_earlier, first.u_end()) ||
+                last.runs_backwards(last.u_begin(), crossing.u_later);
+  for (size_t i = earlier + 1; i < later && !defect; ++i)
+    defect = window_[i].piece && (window_[i].gap_bridge || window_[i].piece->runs_backwards());
+  // A loop that holds such a stretch is still the contour's own when it turns the way the
+  // programmed contour turns between the same points (a pocket closed in the corner it started
+  // from, its corner rounded with the tool's radius: the whole pocket is that loop).
+  return defect && !loop_turns_as_programmed(earlier, later, crossing);
+}
+
+namespace {
+// Twice the signed area of the closed polygon through `points` (shoelace): > 0 anticlockwise.
+double twice_signed_area(const std::vector<Eigen::Vector2d>& points) {
+  double sum = 0.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector2d& a = points[i];
+    const Eigen::Vector2d& b = points[(i + 1) % points.size()];
+    sum += a.x() * b.y() - a.y() * b.x();
+  }
+  return sum;
+}
+}  // namespace
+
+bool CutterCompensation::loop_turns_as_programmed(size_t earlier, size_t later, const PieceCrossing& crossing) const {
+  // The loop of the tool-centre path from the crossing round to itself, and the programmed
+  // contour between the same base points closed by the chord back. A loop an offset makes where
+  // it folds over (a bend or corner tighter than the tool radius) runs against the programmed
+  // contour's sense there; a loop of the contour itself runs with it. Corners inserted by the
+  // compensation are no programmed contour: the base loop goes straight across them. A loop
+  // through the approach or the retraction (no offset, not inserted) has no programmed
+  // counterpart to compare with: it is left to the rule of cut_out_is_defective alone.
+  std::vector<Eigen::Vector2d> offset_loop, base_loop;
+  for (size_t i = earlier; i <= later; ++i) {
+    if (!window_[i].piece) continue;
+    const OffsetPiece& piece = *window_[i].piece;
+    if (piece.offset() == 0.0 && !window_[i].element.inserted) return false;
+    const double u0 = i == earlier ? crossing.u_earlier : piece.u_begin();
+    const double u1 = i == later ? crossing.u_later : piece.u_end();
+    const bool programmed = piece.offset() != 0.0;
+    auto put = [&](double u) {
+      offset_loop.push_back(plane_.project(piece.position(u)));
+      if (programmed) base_loop.push_back(plane_.project(piece.base().at(u).position));
+    };
+    put(u0);
+    for (const double u : piece.sample_parameters())
+      if (u > u0 && u < u1) put(u);
+    put(u1);
+  }
+  // Below this (mm², doubled) a loop has no sense of turning worth trusting: it stays a defect.
+  constexpr double kLeastArea = 1e-9;
+  const double offset_area = twice_signed_area(offset_loop), base_area = twice_signed_area(base_loop);
+  if (std::abs(offset_area) < kLeastArea || std::abs(base_area) < kLeastArea) return false;
+  return (offset_area > 0.0) == (base_area > 0.0);
 }
 
 void CutterCompensation::cut_between(size_t earlier, size_t later, double u_earlier, double u_later) {

@@ -104,6 +104,7 @@ class CutterCompensation : public ElementSink {
   void add_motion(const PathElement& element);
   void resolve_crossings(size_t first_new, int check_blocks);
   bool cut_out_is_defective(size_t earlier, size_t later, const PieceCrossing& crossing) const;
+  bool loop_turns_as_programmed(size_t earlier, size_t later, const PieceCrossing& crossing) const;
   void cut_between(size_t earlier, size_t later, double u_earlier, double u_later);
   void release_old_blocks(int check_blocks);
   std::optional<int> pending_fold_block() const;
