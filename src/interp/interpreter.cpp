@@ -256,6 +256,8 @@ void Interpreter::apply_commands(BlockContext& ctx) {
       }
     } else if (n == "SETMS") {
       set_master_spindle(ctx, c);
+    } else if (n == "TCA") {
+      change_tool_regardless_of_status(ctx, c);
     } else if (n == "DRYCUT_CONTOUR_BEGIN" || n == "DRYCUT_CONTOUR_END") {
       record_contour(ctx, n == "DRYCUT_CONTOUR_BEGIN", c.column);
     } else if (n == "MSG") {

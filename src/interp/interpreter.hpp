@@ -131,6 +131,7 @@ class Interpreter {
   void note_tool_change_m_words(BlockContext& ctx);  // the tool change M function (MD22550 = 1)
   void apply_feed_address(BlockContext& ctx, const parser::AddressWord& a);  // F
   void apply_tool_address(BlockContext& ctx, const parser::AddressWord& a);  // T, T<n>=
+  void change_tool_regardless_of_status(BlockContext& ctx, const parser::CommandWord& c);  // TCA
   void apply_edge_address(BlockContext& ctx, const parser::AddressWord& a);  // D
   bool apply_smoothing_address(BlockContext& ctx, const parser::AddressWord& a);
   // RND=, RNDM=, CHF=, CHR=, FRC=, FRCM= (interpreter_corners.cpp, contour_corners.hpp).

@@ -27,6 +27,33 @@ void Interpreter::note_tool_change_m_words(BlockContext& ctx) {
   }
 }
 
+void Interpreter::change_tool_regardless_of_status(BlockContext& ctx, const parser::CommandWord& c) {
+  // TCA("name", duplo, toolholder): tool management's tool change that ignores the tool's status
+  // (disabled, worn): the tool is selected and changed in this block, as T="name" with the change
+  // M function (Function Manual Tool Management, "TCA"). duplo selects that sister tool (0 or
+  // missing: by the name, as T="name"); toolholder 0 or missing is the master spindle.
+  const auto* name = c.args.empty() ? nullptr : std::get_if<std::string>(&c.args[0]);
+  if (!name || name->empty()) raise(ctx, 12080, "TCA needs a tool name: TCA(\"name\", duplo, toolholder)", c.column);
+  auto number_arg = [&](size_t i) {
+    const auto* v = i < c.args.size() ? std::get_if<double>(&c.args[i]) : nullptr;
+    return v ? *v : 0.0;
+  };
+  const double duplo = number_arg(1), holder = number_arg(2);
+  if (!(duplo >= 0 && duplo <= kMaxToolNumber && duplo == std::floor(duplo)) ||
+      !(holder >= 0 && holder <= 99 && holder == std::floor(holder)))
+    raise(ctx, 12160, "TCA: duplo and toolholder must be whole numbers >= 0", c.column);
+  if (holder > 0 && static_cast<int>(holder) != master_spindle()) {
+    warn_once(ctx, "TCA for toolholder " + std::to_string(static_cast<int>(holder)) +
+                       " (a tool for another spindle than the master: not simulated)", c.column);
+    return;
+  }
+  std::string id = *name;
+  if (duplo >= 1)
+    if (const machine::Tool* sister = tools_.find_sister(*name, static_cast<int>(duplo))) id = std::to_string(sister->number);
+  program_tool(ctx, id, c.column);
+  ctx.tool_change = true;
+}
+
 void Interpreter::apply_feed_address(BlockContext& ctx, const AddressWord& a) {
   if (ctx.dwell) return;  // G4 F<s>: dwell time, modal feed unchanged
   // F has a resolution of 0.001: a smaller value is zero on the control (and would make

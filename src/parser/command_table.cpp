@@ -116,7 +116,7 @@ constexpr std::array kCommands{
     // (Job Planning; Function Manual Tool Management): valid calls, no path of their own.
     CommandEntry{"SETPIECE", N}, CommandEntry{"GETACTT", N}, CommandEntry{"NEWT", N},
     CommandEntry{"DELT", N},    CommandEntry{"GETSELT", M}, CommandEntry{"GETEXET", M},
-    CommandEntry{"TCA", N},     CommandEntry{"POSM", N},    CommandEntry{"RESETMON", N},
+    CommandEntry{"TCA", M},     CommandEntry{"POSM", N},    CommandEntry{"RESETMON", N},
     CommandEntry{"SETMTH", N},  CommandEntry{"CANCEL", N},  CommandEntry{"LOCK", N},
     CommandEntry{"UNLOCK", N},  CommandEntry{"RESET", N},   CommandEntry{"NEWCONF", N},
     CommandEntry{"WRITE", N},   CommandEntry{"READ", N},    CommandEntry{"DELETE", N},
