@@ -191,14 +191,9 @@ bool ToolState::set_edge_parameter(int parameter, int t, int d, double value) {
     case 23: edge->base_mm[static_cast<size_t>(parameter - 21)] = value; break;
     default: break;
   }
-  // The active edge takes the new value at once (the control re-reads it with the next D or
-  // motion; drycut applies it with the next motion as for any length change). The number of
-  // teeth waits for the next D (set_edge_teeth).
-  if (has_tool() && edge_ == d && find(*active_) && find(*active_)->number == t) {
-    const int teeth = offsets_.teeth;
-    offsets_ = ToolOffsets::of(*edge);
-    offsets_.teeth = teeth;
-  }
+  // The active offsets are not touched: new values of the active edge take effect with the next
+  // D or tool change, as a change made on the operator panel (Fundamentals, "Tool radius
+  // compensation", changing the compensation values; until 2026-11-30 they acted at once).
   return true;
 }
 

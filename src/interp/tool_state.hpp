@@ -64,7 +64,8 @@ class ToolState {
   // $TC_DP<parameter>[t, d] = value for the tool numbered t: 1 = tool type, 2 = cutting edge
   // position, 3..5 = lengths 1..3, 6 = radius, 12..14 and 15 the wear of lengths 1..3 and of the
   // radius, added to them, 21..23 base lengths 1..3 (mm); other parameters are accepted and do
-  // not change the path. A missing tool or edge is created. Returns false for a parameter or
+  // not change the path. A missing tool or edge is created. The active edge's offsets take the
+  // new values with the next D or tool change, not at once. Returns false for a parameter or
   // index out of the control's range.
   bool set_edge_parameter(int parameter, int t, int d, double value);
   // $TC_DPNT[t, d] = teeth. As on the control (Fundamentals, "Tooth feedrate (G95 FZ)") the
