@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <cstdio>
+#include <string>
 
 #include "interp/constant_cutting_speed.hpp"
 #include "interp/interpreter.hpp"
@@ -64,7 +65,8 @@ void Interpreter::note_group15_change(BlockContext& ctx, bool was_g96, FeedMode 
     warn_once(ctx, 990019, buf, 0);
   } else if (!was_g96 && g97 && !ctx.block.has_g(95) && feed_before != FeedMode::PerRevolution &&
              state_.feed_mode == FeedMode::PerRevolution) {  // (G95 G97 in one block says it itself)
-    warn_once(ctx, 990019, "G97 selects feed per revolution (as G95): F is now mm/rev", 0);
+    warn_once(ctx, 990019, std::string(ctx.block.has_g(97) ? "G97" : "G973") +
+                               " selects feed per revolution (as G95): F is now mm/rev", 0);
   }
 }
 

@@ -107,5 +107,12 @@ TEST(SpindleLimits, G97SelectingFeedPerRevolutionIsWarnedOnlyWhenNotWrittenBesid
   EXPECT_NEAR(written->sink.motions()[0].feed_mm_s, 80.0 / 60.0, 1e-12);
 }
 
+TEST(SpindleLimits, G973SelectingFeedPerRevolutionIsWarnedByItsOwnName) {
+  // The warning names the code written (until 2026-11-30 G973 was warned as "G97").
+  auto r = run_program("G94\nG973 S800 M3\nG1 X10 F0.1\nM30\n");
+  ASSERT_FALSE(r->alarm) << r->alarm->format();
+  EXPECT_EQ(warnings_with(*r, 990019, "G973 selects feed per revolution"), 1u);
+}
+
 }  // namespace
 }  // namespace drycut::interp::testing
