@@ -185,6 +185,9 @@ constexpr std::array kCommands{
     CommandEntry{"TANGOF", N}, CommandEntry{"TANGON", N}, CommandEntry{"TCI", N},
     CommandEntry{"TLIFT", N}, CommandEntry{"TML", N}, CommandEntry{"TMOF", N},
     CommandEntry{"TMON", N}, CommandEntry{"TRAFOON", N}, CommandEntry{"WAITENC", N},
+    // Working-area limitation on/off: drycut does not monitor the working area (G25/G26 with
+    // axis words are warned too), so switching the monitoring is warned by name.
+    CommandEntry{"WALIMON", N}, CommandEntry{"WALIMOF", N},
     // Valid, and modelled by doing nothing: they change display, single-block or buffer
     // behaviour, nothing a dry run measures.
     CommandEntry{"SBLOF", E},   CommandEntry{"SBLON", E},   CommandEntry{"DISPLOF", E},
@@ -193,7 +196,7 @@ constexpr std::array kCommands{
     CommandEntry{"STOPRE", M},  CommandEntry{"IPTRLOCK", E}, CommandEntry{"IPTRUNLOCK", E},
     CommandEntry{"CLEARM", E},  CommandEntry{"SETM", E},    CommandEntry{"WRTPR", E},
     CommandEntry{"RMI", E},     CommandEntry{"RMB", E},     CommandEntry{"RME", E},
-    CommandEntry{"RMN", E},     CommandEntry{"WALIMON", E}, CommandEntry{"WALIMOF", E},
+    CommandEntry{"RMN", E},
     CommandEntry{"RMBBL", E},   CommandEntry{"RMIBL", E},   CommandEntry{"RMEBL", E},
     CommandEntry{"RMNBL", E},
     // Sum/setup offsets, tool length and working area in other systems, online tool offset,
