@@ -58,26 +58,17 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
 
 // A circle reaches beyond its end points where an axis's coordinate turns: at the angles
 // α_i + k·π of each axis i inside the sweep (the circle's coordinate i is r·R_i·cos(φ − α_i),
-// motion/element_discretisation.hpp). The control monitors the software limits along the path
+// geometry/arc_curve.hpp). The control monitors the software limits along the path
 // (alarm 10720), so those points are checked as the end points are: a G2 whose end lies inside
 // the limits but whose half circle leaves them is refused, not passed.
 void Interpreter::check_arc_limits(const BlockContext& ctx, const geometry::Curve& curve) {
   if (typeid(curve) != typeid(geometry::ArcCurve)) return;
   const auto& arc = static_cast<const geometry::ArcCurve&>(curve);
-  const double sweep = arc.sweep();
-  if (sweep == 0.0 || arc.radius() <= 0.0) return;
-  const double lo = std::min(arc.start_angle(), arc.start_angle() + sweep);
-  const double hi = std::max(arc.start_angle(), arc.start_angle() + sweep);
+  if (arc.sweep() == 0.0 || arc.radius() <= 0.0) return;
   for (int i = 0; i < 3; ++i) {
-    if (std::hypot(arc.first_axis()[i], arc.second_axis()[i]) < 1e-12) continue;  // along the normal
-    const double alpha = std::atan2(arc.second_axis()[i], arc.first_axis()[i]);
-    for (double phi = alpha + std::ceil((lo - alpha) / std::numbers::pi) * std::numbers::pi; phi < hi;
-         phi += std::numbers::pi) {
-      if (phi <= lo) continue;
-      const Vector3d p = arc.centre() + arc.radius() * (std::cos(phi) * arc.first_axis() + std::sin(phi) * arc.second_axis()) +
-                         arc.axial_travel() * (phi - arc.start_angle()) / sweep * arc.normal();
-      check_limits(ctx, p);
-    }
+    if (arc.axis_radius(i) < 1e-12) continue;  // along the normal
+    arc.for_each_angle_inside(arc.axis_phase(i), std::numbers::pi,
+                              [&](double phi) { check_limits(ctx, arc.position_at_angle(phi)); });
   }
 }
 

@@ -28,32 +28,26 @@ Station station_at(const geometry::Curve& curve, double s, const PointLimits& li
   return st;
 }
 
-// Angles β + k·period (k integer) strictly inside the sweep, as arc lengths.
-void add_periodic(double beta, double period, double phi0, double sweep, double speed, std::vector<double>& out) {
-  const double lo = std::min(phi0, phi0 + sweep), hi = std::max(phi0, phi0 + sweep);
-  for (double phi = beta + std::ceil((lo - beta) / period) * period; phi < hi; phi += period) {
-    if (phi > lo) out.push_back(std::abs(phi - phi0) * speed);
-  }
-}
-
 void arc_critical_lengths(const geometry::ArcCurve& arc, double length, std::vector<double>& out) {
   const double sweep = arc.sweep();
   if (sweep == 0.0 || arc.radius() <= 0.0) return;  // straight axial move: constant limits
   const double speed = length / std::abs(sweep);
   const double pitch = arc.axial_travel() / sweep;
-  const Vec3& e1 = arc.first_axis();
-  const Vec3& e2 = arc.second_axis();
   const Vec3 n = arc.normal();
+  // Angles strictly inside the sweep, as arc lengths from the start.
+  auto add = [&](double beta, double period) {
+    arc.for_each_angle_inside(beta, period, [&](double phi) { out.push_back(std::abs(phi - arc.start_angle()) * speed); });
+  };
   for (int i = 0; i < 3; ++i) {
-    const double r_i = std::hypot(e1[i], e2[i]);
+    const double r_i = arc.axis_radius(i);
     if (r_i < 1e-12) continue;  // the axis is along the normal: t_i, κ_i constant
-    const double alpha = std::atan2(e2[i], e1[i]);
-    add_periodic(alpha, kPi / 2, arc.start_angle(), sweep, speed, out);
+    const double alpha = arc.axis_phase(i);
+    add(alpha, kPi / 2);
     // t_i = 0 on a helix: r·R_i·sin(φ - α) = p·n_i.
     const double q = pitch * n[i] / (arc.radius() * r_i);
     if (pitch != 0.0 && std::abs(q) < 1.0) {
-      add_periodic(alpha + std::asin(q), 2 * kPi, arc.start_angle(), sweep, speed, out);
-      add_periodic(alpha + kPi - std::asin(q), 2 * kPi, arc.start_angle(), sweep, speed, out);
+      add(alpha + std::asin(q), 2 * kPi);
+      add(alpha + kPi - std::asin(q), 2 * kPi);
     }
   }
 }
@@ -119,9 +113,8 @@ struct ArcRefiner {
 
   void prepare() {
     for (int i = 0; i < 3; ++i) {
-      const auto k = static_cast<size_t>(i);
-      axis_radius[k] = std::hypot(arc.first_axis()[i], arc.second_axis()[i]);
-      axis_phase[k] = std::atan2(arc.second_axis()[i], arc.first_axis()[i]);
+      axis_radius[static_cast<size_t>(i)] = arc.axis_radius(i);
+      axis_phase[static_cast<size_t>(i)] = arc.axis_phase(i);
     }
   }
 

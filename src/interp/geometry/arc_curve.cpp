@@ -38,6 +38,14 @@ CurvePoint ArcCurve::at(double s) const {
   return evaluate(s);
 }
 
+double ArcCurve::axis_radius(int i) const { return std::hypot(e1_[i], e2_[i]); }
+
+double ArcCurve::axis_phase(int i) const { return std::atan2(e2_[i], e1_[i]); }
+
+Vec3 ArcCurve::position_at_angle(double phi) const {
+  return centre_ + radius_ * (std::cos(phi) * e1_ + std::sin(phi) * e2_) + pitch_ * (phi - start_angle_) * normal_;
+}
+
 CurvePoint ArcCurve::evaluate(double s) const {
   s = std::clamp(s, 0.0, length_);
   CurvePoint p;

@@ -5,6 +5,9 @@
 //   P(phi) = centre + radius (cos phi e1 + sin phi e2) + axial_travel (phi - start_angle) / sweep * n
 // Exact closed forms: length = sqrt((radius sweep)^2 + axial_travel^2), curvature = r / (r^2 + c^2)
 // with c = axial_travel / sweep (mm per radian).
+#include <algorithm>
+#include <cmath>
+
 #include "interp/geometry/curve.hpp"
 #include "interp/geometry/plane.hpp"
 
@@ -31,6 +34,23 @@ class ArcCurve final : public Curve {
   Vec3 normal() const { return normal_; }
   const Vec3& first_axis() const { return e1_; }   // e1: angle 0
   const Vec3& second_axis() const { return e2_; }  // e2: angle pi/2
+
+  // Per axis i the circle's coordinate is radius·R_i·cos(phi − α_i) (plus the axial part):
+  // R_i = |(e1_i, e2_i)| (0: the axis lies along the normal) and α_i = atan2(e2_i, e1_i). An
+  // axis turns (its extremes, the software limits' points) at α_i + k·π, its curvature
+  // component peaks there and its tangent component at α_i + π/2 + k·π.
+  double axis_radius(int i) const;
+  double axis_phase(int i) const;
+  // Calls f(phi) for every angle beta + k·period (k integer) strictly inside the swept range,
+  // in ascending order of phi.
+  template <typename F>
+  void for_each_angle_inside(double beta, double period, F&& f) const {
+    const double lo = std::min(start_angle_, start_angle_ + sweep_), hi = std::max(start_angle_, start_angle_ + sweep_);
+    for (double phi = beta + std::ceil((lo - beta) / period) * period; phi < hi; phi += period)
+      if (phi > lo) f(phi);
+  }
+  // The point at angle phi (the helix's axial part in proportion to phi − start_angle).
+  Vec3 position_at_angle(double phi) const;
 
  private:
   Vec3 centre_;
