@@ -375,9 +375,8 @@ void Interpreter::limit_tapping_acceleration(PathElement& e) const {
   const int k = state_.thread_lead_axis;
   if (!(spindle > 0) || !(state_.thread_lead_mm > 0) || k < 0 || k > 2) return;
   const size_t axis = static_cast<size_t>(k);
-  const auto& group = profile_.dynamic_groups[static_cast<size_t>(state_.dynamic_group)];
-  const double mode = state_.accel == AccelProfile::Soft ? profile_.soft_accel_factor : 1.0;
-  const double axis_accel = profile_.axes[axis].max_accel_mm_s2 * group.max_ax_accel * mode;
+  const double axis_accel = machine::axis_mode_accel_mm_s2(profile_, axis, static_cast<size_t>(state_.dynamic_group),
+                                                           false, state_.accel == AccelProfile::Soft);
   if (!(axis_accel > 0)) return;
   float& factor = e.dynamics.limits.accel[axis];
   factor = std::min(factor, static_cast<float>(state_.thread_lead_mm * spindle / axis_accel));

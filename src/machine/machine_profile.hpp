@@ -200,6 +200,15 @@ struct MachineProfile {
   }
 };
 
+// The acceleration of geometry axis `axis` (0..2) in dynamic group `group` before ACC[ax]:
+// MD32300 MAX_AX_ACCEL × the group's factor (DYNNORM ... DYNPREC) × the factor of the
+// interpolation mode, MD32434 G00_ACCEL_FACTOR for rapids, MD32433 SOFT_ACCEL_FACTOR under SOFT.
+// The planner's element limits and the interpreter's tapping limit both start from it.
+inline double axis_mode_accel_mm_s2(const MachineProfile& p, size_t axis, size_t group, bool rapid, bool soft) {
+  const double mode = rapid ? p.g0_accel_factor : (soft ? p.soft_accel_factor : 1.0);
+  return p.axes[axis].max_accel_mm_s2 * p.dynamic_groups[group].max_ax_accel * mode;
+}
+
 // A profile that fails validation: the message names the offending key.
 class ProfileError : public std::runtime_error {
  public:

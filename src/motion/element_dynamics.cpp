@@ -16,6 +16,7 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
   // mode factors (SOFT, G0) apply on top of it.
   const machine::DynamicGroupFactors& group = profile.dynamic_groups[static_cast<size_t>(element.dynamics.group)];
   const double accel_factor = element.rapid ? profile.g0_accel_factor : (d.soft ? profile.soft_accel_factor : 1.0);
+  const auto group_index = static_cast<size_t>(element.dynamics.group);
   const double jerk_factor = element.rapid ? profile.g0_jerk_factor : 1.0;
   // ACC[ax]/VELOLIM[ax]/JERKLIM[ax] scale each axis's limits (the corner rules included).
   const interp::AxisLimitFactors& programmed = element.dynamics.limits;
@@ -26,7 +27,7 @@ ElementDynamics make_element_dynamics(const interp::PathElement& element, double
     const double jerk = axis.max_jerk_mm_s3 * group.max_ax_jerk * programmed.jerk[k];
     d.axis_velocity[i] = axis.max_velocity_mm_s * programmed.velocity[k];
     d.raw_axis_accel[i] = accel;
-    d.axis_accel[i] = accel * accel_factor;
+    d.axis_accel[i] = machine::axis_mode_accel_mm_s2(profile, k, group_index, element.rapid, d.soft) * programmed.accel[k];
     d.axis_jerk[i] = jerk * jerk_factor;
     d.transition_jerk[i] =
         (axis.transition_jerk_mm_s3 > 0 ? axis.transition_jerk_mm_s3 * group.path_trans_jerk_lim * programmed.jerk[k] : jerk) *
