@@ -420,7 +420,11 @@ CallArgument ProgramLoader::call_argument(ExprIndex e) {
     return a;
   }
   if (n.op == ExprOp::Name && (n.text.empty() || n.text[0] != '$')) {
-    if (Variable* v = find_variable(n.text)) {
+    Variable* v = find_variable(n.text);
+    // More indexes than the variable has dimensions: a frame component (_FR[X,TR]) or a string
+    // character (_S[1]) — a value, not an element a VAR parameter could refer to.
+    if (v && n.b > static_cast<uint32_t>(v->rank())) v = nullptr;
+    if (v) {
       a.variable = v;
       if (n.b == 0 && v->rank() > 0) {  // a whole array (VAR parameter)
         a.element = SIZE_MAX;
