@@ -99,17 +99,22 @@ std::optional<double> InterpreterStateView::g_group_index(int group) const {
   }
 }
 
-std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<const Value> indices) const {
-  // $P_S[n] / $AA_S[n]: spindle n; without an index (or [0]) the master spindle. The index may
-  // be the spindle's axis, SP<n> (from SPI(n) or S<n>).
+std::optional<int> InterpreterStateView::spindle_index(std::span<const Value> indices) const {
+  // Spindle n of $P_S[n], $AA_S[n], $P_SDIR[n]; without an index (or [0]) the master spindle.
+  // The index may be the spindle's axis, SP<n> (from SPI(n) or S<n>).
   double k = indices.size() == 1 && indices[0].is_number() ? indices[0].number : 0.0;
   if (indices.size() == 1 && !indices[0].is_number()) {
     const std::string& axis = indices[0].text;
     k = detail::is_spindle_axis_name(axis) && axis.size() <= 4 ? std::stod(axis.substr(2)) : -1.0;
   }
-  const int spindle = k >= 0 && k <= 99 && k == std::trunc(k) ? static_cast<int>(k) : -1;
-  if (spindle < 0) return std::nullopt;
-  return Value(actual ? interpreter_.spindle_speed_on_ramp(spindle) : interpreter_.programmed_spindle_speed(spindle));
+  if (!(k >= 0 && k <= 99 && k == std::trunc(k))) return std::nullopt;
+  return static_cast<int>(k);
+}
+
+std::optional<Value> InterpreterStateView::spindle_speed(bool actual, std::span<const Value> indices) const {
+  const auto spindle = spindle_index(indices);
+  if (!spindle) return std::nullopt;
+  return Value(actual ? interpreter_.spindle_speed_on_ramp(*spindle) : interpreter_.programmed_spindle_speed(*spindle));
 }
 
 std::optional<double> InterpreterStateView::axis_position(std::span<const Value> indices, bool workpiece, bool actual) const {
@@ -259,6 +264,14 @@ std::optional<Value> InterpreterStateView::read_system_variable(std::string_view
   if (n == "$DRYCUT_SWIVEL_DATUM" && indices.size() == 1 && indices[0].is_number())
     return Value(profile_.machine_data.count("$TC_CARR" + parser::as_text(indices[0]) + "[1]") ? 1.0 : 0.0);
   if (n == "$P_S" || n == "$AA_S") return spindle_speed(n == "$AA_S", indices);
+  // The direction of spindle n (Job Planning, system variables: $P_SDIR the programmed one,
+  // $AC_SDIR the current one; in a dry run the same): 3 = M3, 4 = M4, 5 = stopped.
+  if (n == "$P_SDIR" || n == "$AC_SDIR") {
+    if (const auto k = spindle_index(indices)) return Value(static_cast<double>(interpreter_.spindle_direction(*k)));
+    return std::nullopt;
+  }
+  // drycut runs one channel: channel 1 (macros index per-channel GUD arrays with it).
+  if (n == "$P_CHANNO" && indices.empty()) return Value(1.0);
   // The master spindle's number (MD20090, SETMS(n)).
   if (n == "$P_MSNUM" || n == "$AC_MSNUM") return Value(static_cast<double>(interpreter_.master_spindle()));
   if (auto v = tool_variable(n, indices)) return v;

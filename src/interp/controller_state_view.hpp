@@ -36,6 +36,7 @@ class InterpreterStateView : public parser::ControllerStateView {
   std::optional<parser::Value> tool_presence(std::string_view name, std::span<const parser::Value> indices) const;
   // $P_PFRAME, $P_UIFR[n], $P_IFRAME, $P_ACTFRAME ... whole or [axis, component] (frame_variable_reads.cpp).
   std::optional<parser::Value> frame_variable(std::string_view name, std::span<const parser::Value> indices) const;
+  std::optional<int> spindle_index(std::span<const parser::Value> indices) const;
   std::optional<parser::Value> spindle_speed(bool actual, std::span<const parser::Value> indices) const;
   // `actual`: where the machine is ($AA_IM, $AA_IW), else the programmed point ($P_EP).
   std::optional<double> axis_position(std::span<const parser::Value> indices, bool workpiece, bool actual) const;

@@ -81,6 +81,8 @@ class Interpreter {
   // $P_S[n] / $AA_S[n] of spindle n (0: the master): the last programmed speed, and the speed it
   // turns at in a dry run (0 when stopped, negative under M4; interpreter_spindle.cpp).
   double programmed_spindle_speed(int spindle) const;
+  // $P_SDIR[n] / $AC_SDIR[n]: 3 (M3), 4 (M4) or 5 (stopped, also after SPOS); 0 = master.
+  int spindle_direction(int spindle) const;
   double actual_spindle_speed(int spindle) const;
   // $AA_S: the speed on the spindle's run-up ramp (MD35200) at the interpreter's clock; the set
   // speed once the ramp is through (interpreter_spindle_run_up.cpp).

@@ -253,6 +253,20 @@ double Interpreter::programmed_spindle_speed(int spindle) const {
   return it == other_spindles_.end() ? 0.0 : it->second.rpm;
 }
 
+int Interpreter::spindle_direction(int spindle) const {
+  SpindleState state = state_.spindle;
+  if (spindle != 0 && spindle != master_spindle_) {
+    const auto it = other_spindles_.find(spindle);
+    state = it == other_spindles_.end() ? SpindleState::Stopped : it->second.state;
+  }
+  switch (state) {
+    case SpindleState::Clockwise: return 3;
+    case SpindleState::CounterClockwise: return 4;
+    case SpindleState::Stopped: break;
+  }
+  return 5;
+}
+
 double Interpreter::actual_spindle_speed(int spindle) const {
   // $AA_S reads the set speed at once, not the speed on the run-up ramp (the path's wait for it
   // is timed by wait_for_spindle_speed); M5 and SPOS stop it. The sign follows the direction.
