@@ -65,6 +65,16 @@ std::optional<Value> InterpreterStateView::tool_presence(std::string_view n, std
   if (n == "$P_TOOLEXIST") return Value(tool ? 1.0 : 0.0);
   if (n == "$TC_TP2") return Value::of_text(tool ? tool->name : std::string());
   if (n == "$TC_TP1") return Value(tool ? static_cast<double>(tool->duplo) : 0.0);  // duplo number
+  // $TC_TP8[t], the tool status bits (Function Manual Tool Management: bit 0 active, bit 1
+  // enabled, bit 2 disabled, bit 3 measured, ...): a tool of the run's table is enabled (a dry
+  // run knows no locks), the one in the spindle also active. Macros check the enabled bit
+  // before a change and stop with their own alarm when it is 0.
+  if (n == "$TC_TP8") {
+    if (!tool) return Value(0.0);
+    const auto& active = interpreter_.tools().active_tool();
+    const machine::Tool* in_spindle = active ? interpreter_.tools().find(*active) : nullptr;
+    return Value(in_spindle == tool ? 3.0 : 2.0);
+  }
   return std::nullopt;
 }
 
