@@ -393,6 +393,7 @@ void ProgramLoader::execute_if_goto() {
     jump(parsed_.jump, parsed_.target);
     return;
   }
+  std::string input = condition_input();
   const std::vector<CaseBranch> more = parsed_.cases;  // the jump reuses parsed_
   for (const CaseBranch& b : more)
     if (eval(b.value) != 0.0) {
@@ -400,6 +401,11 @@ void ProgramLoader::execute_if_goto() {
       jump(b.jump, b.target);
       return;
     }
+  // A PLC byte or word that decided not to jump (TC_WAIT: IF $A_DBB[100]==1 GOTOF TC_OK, in a
+  // poll whose counter times out) decides the alarm that follows as much: a dry run cannot make
+  // it come (it has no one awaited value, as a digital input has), so the timeout's SETAL within
+  // the lines after it is the signal's, not the machine's state (990021).
+  if (input.starts_with("$A_DB") && !system_variables_.signal_given(input)) input_jump_ = {std::move(input), steps_};
 }
 
 void ProgramLoader::note_input_jump() {
