@@ -83,6 +83,11 @@ void print_summary(std::FILE* out, const RunOptions& o, const machine::MachinePr
                 std::filesystem::path(d.min_source.file_name()).filename().string().c_str(), d.min_source.line,
                 d.v_min_mm_s * 60, d.programmed_feed_mm_s * 60, std::string(motion::to_string(d.limit)).c_str(),
                 block.c_str());
+    // A stretch bound elsewhere by another limit than at its lowest point: say which, or a pass
+    // held down by the short-block rule reads as one corner.
+    if (d.element_count > 1 && d.main_limit != d.limit)
+      std::fprintf(out, "      a stretch of %zu blocks, %.1f mm, mostly %s\n", d.element_count, d.length_mm,
+                   std::string(motion::to_string(d.main_limit)).c_str());
   }
   if (dips.size() > o.dips_shown) std::fprintf(out, "    ... %zu more (see --json)\n", total_dips - o.dips_shown);
 }

@@ -2,7 +2,8 @@
 
 namespace drycut::motion {
 
-void FeedDipCollector::add(const BlockRef& source, const BlockRef& at, double programmed_feed, double v_min, Limit limit) {
+void FeedDipCollector::add(const BlockRef& source, const BlockRef& at, double programmed_feed, double v_min, Limit limit,
+                           double length_mm) {
   if (!(v_min < threshold_ * programmed_feed)) {
     interrupt();
     return;
@@ -11,6 +12,7 @@ void FeedDipCollector::add(const BlockRef& source, const BlockRef& at, double pr
     if (open_listed_) {
       FeedDip& dip = dips_.back();
       ++dip.element_count;
+      add_length(dip, limit, length_mm);
       if (v_min < dip.v_min_mm_s) {
         dip.v_min_mm_s = v_min;
         dip.min_source = at;
@@ -27,7 +29,16 @@ void FeedDipCollector::add(const BlockRef& source, const BlockRef& at, double pr
     ++not_listed_;
     return;
   }
-  dips_.push_back(FeedDip{source, at, source, v_min, programmed_feed, limit, 1});
+  dips_.push_back(FeedDip{source, at, source, v_min, programmed_feed, limit, 1, 0.0, limit});
+  open_lengths_.fill(0.0);
+  add_length(dips_.back(), limit, length_mm);
+}
+
+void FeedDipCollector::add_length(FeedDip& dip, Limit limit, double length_mm) {
+  dip.length_mm += length_mm;
+  double& by_limit = open_lengths_[static_cast<size_t>(limit)];
+  by_limit += length_mm;
+  if (by_limit > open_lengths_[static_cast<size_t>(dip.main_limit)]) dip.main_limit = limit;
 }
 
 void FeedDipCollector::interrupt() {

@@ -62,6 +62,11 @@ struct FeedDip {
   double programmed_feed_mm_s = 0;  // F of the block at the minimum
   Limit limit = Limit::Feed;     // what bound the lowest velocity
   size_t element_count = 0;      // elements merged into this dip
+  double length_mm = 0;          // path length of the merged elements
+  // What bound the elements over most of that length (each element counts with the limit of its
+  // own lowest velocity): a whole pass held down by the short-block rule, entered at a corner,
+  // is a `corner` dip at its lowest point and a `short_block` stretch.
+  Limit main_limit = Limit::Feed;
 };
 
 struct PlanSummary {

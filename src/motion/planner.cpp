@@ -618,7 +618,7 @@ void Planner::add_to_summary(const interp::PathElement& e, bool moved, const Com
     if (tally.cut_min < kInf) {
       // Inside a compressed span: the programmed block at the lowest velocity.
       const BlockRef& at = interp::span_block_at(e.span_blocks, e.source, tally.length > 0 ? tally.cut_s / tally.length : 0.0);
-      dips_.add(e.source, at, e.feed_mm_s * to_contour, tally.cut_min, tally.cut_kind);
+      dips_.add(e.source, at, e.feed_mm_s * to_contour, tally.cut_min, tally.cut_kind, tally.length);
     }
   } else if (moved) {
     dips_.interrupt();

@@ -182,7 +182,9 @@ std::string dip_table(const RunReportInput& in, const std::vector<size_t>& worst
          html_escape(d.min_source.text) + "</td><td class=\"num\">" + fmt("%.0f", d.v_min_mm_s * kMinPerS) +
          "</td><td class=\"num\">" + fmt("%.0f", d.programmed_feed_mm_s * kMinPerS) + "</td><td class=\"num\">" +
          fmt("%.0f %%", d.programmed_feed_mm_s > 0 ? 100.0 * d.v_min_mm_s / d.programmed_feed_mm_s : 0.0) +
-         "</td><td>" + html_escape(std::string(motion::to_string(d.limit))) + "</td><td class=\"num\">" +
+         "</td><td>" + html_escape(std::string(motion::to_string(d.limit))) +
+         (d.element_count > 1 && d.main_limit != d.limit ? "; mostly " + std::string(motion::to_string(d.main_limit)) : "") +
+         "</td><td class=\"num\">" +
          std::to_string(d.element_count) + "</td></tr>\n";
   }
   o += "</table>\n";

@@ -66,7 +66,9 @@ json dip_object(const motion::FeedDip& d) {
               {"v_min_mm_min", d.v_min_mm_s * kMinPerS},
               {"programmed_feed_mm_min", d.programmed_feed_mm_s * kMinPerS},
               {"limit", std::string(motion::to_string(d.limit))},
-              {"elements", d.element_count}};
+              {"elements", d.element_count},
+              {"length_mm", d.length_mm},
+              {"main_limit", std::string(motion::to_string(d.main_limit))}};
 }
 
 // Block texts come from shop files: replace invalid UTF-8 instead of failing the report.

@@ -52,4 +52,30 @@ TEST(FeedDipInSpan, NamesTheBlockOfTheLowestVelocity) {
   EXPECT_LT(j["dips"][0]["v_min_mm_min"].get<double>(), 10000.0 * 0.8);
 }
 
+TEST(FeedDipStretch, APassHeldDownByTheShortBlockRuleSaysSo) {
+  // 400 chords of 0.1 mm at F3000 (50 mm/s) under G64, no compressor, entered at a right angle:
+  // a block must last one IPO cycle (4 ms), so 0.1 mm blocks run at most 25 mm/s (times the
+  // profile's short-block factor), below 80 % of F along the whole pass. The one dip is lowest
+  // at the corner and bound by the short-block rule over most of its length; the summary says
+  // so on a line of its own. Until 2026-11-30 it read as a single corner.
+  TempDir dir{"drycut_dip_stretch"};
+  const fs::path program = dir.path / "PASS.MPF", out = dir.path / "run.json";
+  std::string t = "G17 G90 G94 G64\nG0 X20 Y0 Z0\nG1 X20.1 F3000\n";
+  char buf[64];
+  for (int k = 1; k <= 400; ++k) {
+    std::snprintf(buf, sizeof buf, "X20.1 Y%.1f\n", 0.1 * k);
+    t += buf;
+  }
+  write_file(program, t + "M30\n");
+  const auto run = run_drycut("run " + quoted(program) + " --json " + quoted(out));
+  ASSERT_EQ(run.exit_code, 0);
+  const auto j = nlohmann::json::parse(read_file(out));
+  ASSERT_EQ(j["dips"].size(), 1u) << j["dips"].dump();
+  const auto& d = j["dips"][0];
+  EXPECT_EQ(d["limit"], "corner") << d.dump();
+  EXPECT_EQ(d["main_limit"], "short_block") << d.dump();
+  EXPECT_GT(d["length_mm"].get<double>(), 39.0) << d.dump();  // nearly the whole 40.1 mm
+  EXPECT_NE(run.out.find("mostly short_block"), std::string::npos) << run.out;
+}
+
 }  // namespace
