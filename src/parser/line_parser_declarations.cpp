@@ -85,6 +85,8 @@ void LineParser::skip_definition_attributes(ParsedLine& out) {
   while (peek().kind == TokenKind::Name && is_definition_attribute(peek().text)) {
     const std::string_view attribute = peek().text;
     ++pos_;
+    if (attribute == "SYNR" || attribute == "SYNRW") out.def_stop_on_read = true;
+    if (attribute == "SYNW" || attribute == "SYNRW") out.def_stop_on_write = true;
     if (peek().kind == TokenKind::End || peek().kind == TokenKind::Name) continue;
     const ExprIndex value = expression(out);
     if (attribute == "LLI") out.def_lower_limit = value;  // the limits are checked on writes

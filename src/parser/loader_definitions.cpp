@@ -102,6 +102,8 @@ void ProgramLoader::execute_def(bool from_definition_file) {
       existing->def_line = position_.line;
       existing->standard_definition = reading_standard_definitions_;
     }
+    existing->stop_on_read = parsed_.def_stop_on_read;
+    existing->stop_on_write = parsed_.def_stop_on_write;
     if (parsed_.def_lower_limit != kNoExpr) existing->lower_limit = eval(parsed_.def_lower_limit);
     if (parsed_.def_upper_limit != kNoExpr) existing->upper_limit = eval(parsed_.def_upper_limit);
     initialise(*existing, d);

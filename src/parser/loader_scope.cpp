@@ -100,6 +100,7 @@ Value ProgramLoader::Scope::variable(std::string_view name, std::span<const Valu
     return r.value;
   }
   if (const Variable* v = l.find_variable(name)) {
+    if (v->stop_on_read) l.system_variables_.note_preprocessing_stop();
     if (!l.sync_written_names_.empty() && l.sync_written_names_.count(name))
       l.system_variables_.note_external_read(std::string(name) + " (written by a synchronized action)");
     if (is_character_access(*v, indices.size())) {
@@ -323,6 +324,7 @@ Value ProgramLoader::Scope::gett_value(const ExprNode& call, std::span<const Val
 
 void ProgramLoader::assign_variable(Variable& v, uint32_t index_first, uint32_t index_count, ExprIndex value,
                                     uint32_t column) {
+  if (v.stop_on_write) system_variables_.note_preprocessing_stop();
   Value idx[3];
   for (uint32_t k = 0; k < index_count && k < 3; ++k) idx[k] = eval_value(parsed_.pool.args[index_first + k]);
   if (is_character_access(v, index_count)) {  // NAME[i]="C": one character of a STRING

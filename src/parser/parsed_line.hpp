@@ -120,6 +120,8 @@ struct ParsedLine {
   std::string_view def_type;      // INT REAL BOOL CHAR STRING AXIS FRAME
   std::string_view def_scope;     // DEF NCK / CHAN (definition files); empty: local
   ExprIndex def_lower_limit = kNoExpr;  // DEF ... LLI <value> (attribute of the definition)
+  bool def_stop_on_read = false;   // DEF ... SYNR / SYNRW: a read stops preprocessing
+  bool def_stop_on_write = false;  // DEF ... SYNW / SYNRW: a write stops preprocessing
   ExprIndex def_upper_limit = kNoExpr;  // DEF ... ULI <value>
   std::vector<DefEntry> defs;     // DEF entries; PROC parameters
   std::string_view call_name;     // CALL / PROC / EXTERN / DEFINE / REPEAT start name
@@ -148,6 +150,7 @@ struct ParsedLine {
     def_type = {};
     def_scope = {};
     def_lower_limit = def_upper_limit = kNoExpr;
+    def_stop_on_read = def_stop_on_write = false;
     defs.clear();
     call_name = {};
     end_label = {};

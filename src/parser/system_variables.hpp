@@ -115,6 +115,9 @@ class SystemVariables {
   // Reading one outside a synchronized action stops the block preparation until the blocks
   // before it have run (an implicit STOPRE; Job Planning, "Preprocessing stop (STOPRE)").
   uint64_t main_run_reads() const { return main_run_reads_; }
+  // A user variable defined with SYNR/SYNW/SYNRW was read or written: a preprocessing stop as a
+  // main-run variable's read is.
+  void note_preprocessing_stop() const { ++main_run_reads_; }
   const std::string& last_input_read() const { return last_input_; }
   // How many reads let the clock run so far ($AC_TIMER, the run clock, $AA_S): a loop that polls
   // them waits for time, not only for an input it reads besides.

@@ -33,6 +33,10 @@ class Variable {
   size_t size() const { return static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2]; }
   uint32_t def_line = 0;
   bool standard_definition = false;  // from drycut's own definition files: may be defined again
+  // DEF ... SYNR / SYNW / SYNRW: a read / a write of the variable is an implicit preprocessing
+  // stop, as a main-run variable's (Job Planning, "Definition of user data": the attributes).
+  bool stop_on_read = false;
+  bool stop_on_write = false;
   // DEF ... LLI / ULI: the values a write may bring (a numeric variable; +-inf: none given).
   double lower_limit = -std::numeric_limits<double>::infinity();
   double upper_limit = std::numeric_limits<double>::infinity();
