@@ -26,15 +26,10 @@ void register_compare(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand("compare", "Run several programs and compare time, feed, dips, size, deviation");
   cmd->add_option("PROGRAMS", o->programs, "Main programs (.MPF)")->required();
-  cmd->add_option("--search-path", o->program.search_path, "Folder searched for subprograms (repeatable)")
-      ->check(CLI::ExistingDirectory);
-  cmd->add_flag("--no-standard-cycles", o->program.no_standard_cycles,
-                "Do not search drycut's own standard cycles (CYCLE81 ...) after the search path");
-  cmd->add_option("--machine", o->program.machine_file, "Machine profile JSON (default: the embedded profile)");
-  cmd->add_option("--tools", o->program.tools_file, "Tool table (.csv or .json) replacing the profile's tools");
-  cmd->add_option("--max-steps", o->program.max_steps, "Blocks executed before a run is stopped as an endless loop")
-      ->default_val(o->program.max_steps);
-  cmd->add_flag("-q,--quiet", o->program.quiet, "No progress display");
+  // The options of a single run (--search-path, --definitions, --machine, --tools, ...), as run
+  // and regress take them: until 2026-11-30 compare listed its own and lacked --definitions and
+  // --missing-programs.
+  add_run_options(*cmd, o->program);
   cmd->add_option("--json", o->json_file, "Write the comparison as JSON");
   cmd->add_option("--html", o->html_file, "Write an HTML page with the table and the paths overlaid");
   add_curve_options(*cmd, o->curve);

@@ -78,4 +78,22 @@ TEST(CompareCommand, AlarmInOneProgramExitsOne) {
   EXPECT_NE(r.out.find("(1 alarm)"), std::string::npos) << r.out;
 }
 
+TEST(CompareCommand, TakesTheRunOptionsDefinitionsIncluded) {
+  // The programs use a name from a definition file in another folder (a machine's macro file):
+  // compare reads it with --definitions as run does (until 2026-11-30 compare had no such option
+  // and the program stopped with 12550). X=_DEPTH_X moves to X12, so both figures agree.
+  TempDir dir("drycut_compare_cli_definitions");
+  fs::create_directories(dir.path / "defs");
+  write_file(dir.path / "defs" / "MACROS.DEF", "DEFINE _DEPTH_X AS 12\nM30\n");
+  write_file(dir.path / "A.MPF", "G0 X0 Y0 Z0\nG1 X=_DEPTH_X F1200\nM30\n");
+  const fs::path out_json = dir.path / "cmp.json";
+  const CliRun r = run_drycut("compare " + quoted(dir.path / "A.MPF") + " " + quoted(dir.path / "A.MPF") +
+                              " --definitions " + quoted(dir.path / "defs") + " --json " + quoted(out_json));
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const json cmp = json::parse(read_file(out_json));
+  ASSERT_EQ(cmp["programs"].size(), 2u);
+  // G0 from the start (0, 0, 100) down 100 mm, then 12 mm of G1.
+  EXPECT_NEAR(cmp["programs"][0]["path_length_mm"].get<double>(), 112.0, 1e-9);
+}
+
 }  // namespace
