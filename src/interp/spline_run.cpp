@@ -50,7 +50,7 @@ void SplineRun::drain(ElementSink& sink) {
     PathElement element = std::move(waiting_[waiting_head_]);
     element.kind = ElementKind::SplineSpan;
     element.curve = std::move(span.curve);
-    last_tangent_ = element.curve->at(element.curve->length()).tangent;
+    last_tangent_ = element.curve->end_tangent();
     has_last_tangent_ = true;
     sink.consume(std::move(element));
   }

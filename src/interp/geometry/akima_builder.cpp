@@ -18,7 +18,7 @@ TangentCondition as_tangent_condition(const SplineEnd& e) {
 
 class AkimaBuilder final : public HermiteSplineBuilder {
  public:
-  explicit AkimaBuilder(const SplineEnd& begin) : begin_(begin) {}
+  explicit AkimaBuilder(const SplineEnd& begin) : HermiteSplineBuilder(true), begin_(begin) {}
 
  private:
   // Chord slope of interval k (node k -> k+1); one slope beyond either end is extrapolated.

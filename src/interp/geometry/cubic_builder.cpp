@@ -24,7 +24,8 @@ TangentCondition as_tangent_condition(const SplineEnd& e) {
 class CubicBuilder final : public HermiteSplineBuilder {
  public:
   CubicBuilder(const SplineEnd& begin, int window_blocks)
-      : begin_(as_tangent_condition(begin)),
+      : HermiteSplineBuilder(false),
+        begin_(as_tangent_condition(begin)),
         // Fewer than two points either side would leave no room for the cut-off parabola.
         half_(window_blocks <= 0 ? 0 : std::max<size_t>(2, static_cast<size_t>(window_blocks) / 2)) {}
 
@@ -33,7 +34,7 @@ class CubicBuilder final : public HermiteSplineBuilder {
   Vec3 window_tangent(size_t j, size_t lo, size_t hi, const TangentCondition& left,
                       const TangentCondition& right) {
     copy_window(lo, hi, points_, steps_);
-    return cubic_spline_tangents(points_, steps_, left, right, scratch_)[j - lo];
+    return cubic_spline_tangent_at(points_, steps_, left, right, j - lo);
   }
 
   void update_tangents() override {

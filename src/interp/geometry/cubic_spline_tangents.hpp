@@ -33,4 +33,11 @@ std::span<const Vec3> cubic_spline_tangents(std::span<const Vec3> points, std::s
                                             const TangentCondition& begin, const TangentCondition& end,
                                             CubicSplineScratch& scratch);
 
+// The tangent at point j alone, the same system's solution: the rows above j are eliminated
+// downwards and the rows below j upwards (two half Thomas sweeps meeting at row j), so a
+// windowed CSPLINE gets its one tangent per window with no back substitution and no scratch.
+// Equal to cubic_spline_tangents(...)[j] up to rounding.
+Vec3 cubic_spline_tangent_at(std::span<const Vec3> points, std::span<const double> steps,
+                             const TangentCondition& begin, const TangentCondition& end, size_t j);
+
 }  // namespace drycut::geometry

@@ -28,6 +28,8 @@ class Curve {
   virtual CurvePoint at(double s) const = 0;
   virtual Vec3 start() const { return at(0.0).position; }
   virtual Vec3 end() const { return at(length()).position; }
+  // Unit tangent at the end (a spline span gives it without measuring its length).
+  virtual Vec3 end_tangent() const { return at(length()).tangent; }
   // Largest curvature on the curve (1/mm); exact for lines and arcs, sampled for splines.
   virtual double max_curvature() const = 0;
 };

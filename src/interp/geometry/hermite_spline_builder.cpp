@@ -59,6 +59,7 @@ void HermiteSplineBuilder::emit_ready() {
     const Node& b = node(next_span_);
     auto span = std::make_shared<PolynomialSpan>(
         PolynomialSpan::hermite(a.point, b.point, a.tangent, b.tangent, b.step));
+    if (measure_spans_now_) span->length();
     ready_.push_back({std::move(span), b.block});
     ++next_span_;
   }

@@ -132,7 +132,9 @@ class NurbsBuilder final : public SplineBuilder {
     if (equal_weights) coefficients.row(3) << 1.0, 0.0, 0.0, 0.0;
     // Rounding must not invent a cubic term in a degree-2 span.
     if (p == 2) coefficients.col(3).setZero();
-    ready_.push_back({std::make_shared<PolynomialSpan>(coefficients, 1.0), j});
+    auto span = std::make_shared<PolynomialSpan>(coefficients, 1.0);
+    span->length();  // the table now, on the interpreting thread: a B-spline's planner is the longer one
+    ready_.push_back({std::move(span), j});
   }
 
   // de Boor on the local control points d_0..d_p with local knots t_0..t_{2p-1}

@@ -72,8 +72,14 @@ auto PolynomialSpan::with_speed(F&& f) const {
 PolynomialSpan::PolynomialSpan(const Eigen::Matrix4d& coefficients, double u_end)
     : c_(coefficients),
       u_end_(u_end),
-      polynomial_(c_(3, 0) == 1.0 && c_(3, 1) == 0.0 && c_(3, 2) == 0.0 && c_(3, 3) == 0.0) {
-  table_ = with_speed([this](const auto& speed) { return ArcLengthTable(speed, 0.0, u_end_); });
+      polynomial_(c_(3, 0) == 1.0 && c_(3, 1) == 0.0 && c_(3, 2) == 0.0 && c_(3, 3) == 0.0) {}
+
+const ArcLengthTable& PolynomialSpan::table() const {
+  if (!table_built_) {
+    table_ = with_speed([this](const auto& speed) { return ArcLengthTable(speed, 0.0, u_end_); });
+    table_built_ = true;
+  }
+  return table_;
 }
 
 double PolynomialSpan::max_curvature() const {
@@ -125,11 +131,11 @@ double PolynomialSpan::arc_length_between(double u0, double u1) const {
 }
 
 double PolynomialSpan::arc_length_at(double u) const {
-  return with_speed([&](const auto& speed) { return table_.length_at(speed, u); });
+  return with_speed([&](const auto& speed) { return table().length_at(speed, u); });
 }
 
 double PolynomialSpan::parameter_at(double s) const {
-  return with_speed([&](const auto& speed) { return table_.parameter_at(speed, s); });
+  return with_speed([&](const auto& speed) { return table().parameter_at(speed, s); });
 }
 
 CurvePoint PolynomialSpan::by_arc_length(const ParametricDerivatives& d) {
@@ -161,7 +167,7 @@ CurvePoint PolynomialSpan::by_arc_length(const ParametricDerivatives& d) {
 // parameter_at(s) is u = 0 for s <= 0 (and for a table of one entry: a span of no length) and
 // the table's last parameter, u_end itself, for s >= length: those are the cached end points.
 CurvePoint PolynomialSpan::at(double s) const {
-  if (table_.size() < 2 || s <= 0.0) return start_point();
+  if (table().size() < 2 || s <= 0.0) return start_point();
   if (s >= length()) return end_point();
   return by_arc_length(derivatives(parameter_at(s)));
 }

@@ -39,10 +39,11 @@ class PolynomialSpan final : public Curve {
   // Cubic Hermite span on u in [0, h]: P(0)=p0, P(h)=p1, P'(0)=m0, P'(h)=m1.
   static PolynomialSpan hermite(const Vec3& p0, const Vec3& p1, const Vec3& m0, const Vec3& m1, double h);
 
-  double length() const override { return table_.length(); }
+  double length() const override { return table().length(); }
   CurvePoint at(double s) const override;
   Vec3 start() const override { return start_point().position; }
   Vec3 end() const override { return end_point().position; }
+  Vec3 end_tangent() const override { return end_point().tangent; }
   // Sampled on first use: only cutter compensation asks, and the planner's hot path builds
   // one span per spline block.
   double max_curvature() const override;
@@ -70,10 +71,18 @@ class PolynomialSpan final : public Curve {
   const CurvePoint& start_point() const;
   const CurvePoint& end_point() const;
 
+  // The arc-length table, built on first use: a span is made on the interpreting thread but
+  // measured on the planning thread (length, at), so an interpolating spline's main
+  // construction cost goes to the planner, which waits for the interpreter on A and C splines
+  // (the NURBS builder asks for the length at once: its planner is the slower thread).
+  // Single-threaded use per span: the pipeline hands a span over before the planner reads it.
+  const ArcLengthTable& table() const;
+
   Eigen::Matrix4d c_;
   double u_end_;
   bool polynomial_;  // w == 1 (Akima, cubic): P = H.xyz, no quotient rule
-  ArcLengthTable table_;
+  mutable bool table_built_ = false;
+  mutable ArcLengthTable table_;
   mutable double max_curvature_ = -1.0;  // < 0: not sampled yet
   mutable bool start_known_ = false, end_known_ = false;
   mutable CurvePoint start_point_, end_point_;

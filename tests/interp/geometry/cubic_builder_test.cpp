@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry_test_support.hpp"
+#include "interp/geometry/cubic_spline_tangents.hpp"
 #include "interp/geometry/polynomial_span.hpp"
 #include "interp/geometry/spline_builder.hpp"
 #include "machine/alarm.hpp"
@@ -20,6 +21,30 @@ std::vector<Vec3> wiggle(int n) {
     x += 1.0 + 0.5 * (i % 3);
   }
   return pts;
+}
+
+// The one-tangent solve (two half sweeps meeting at row j) against the full Thomas solve, for
+// every row, every pair of end conditions and systems of 2..9 intervals.
+TEST(CubicSplineTangentAt, EqualsTheFullSolveAtEveryPoint) {
+  using Kind = TangentCondition::Kind;
+  const auto pts = wiggle(10);
+  const std::vector<TangentCondition> ends{
+      {Kind::Natural, Vec3::Zero()}, {Kind::Clamped, Vec3(0.6, -0.8, 0.0)}, {Kind::NotAKnot, Vec3::Zero()}};
+  for (size_t count = 3; count <= pts.size(); ++count) {
+    const std::span<const Vec3> p(pts.data(), count);
+    std::vector<double> h;
+    for (size_t i = 1; i < count; ++i) h.push_back((pts[i] - pts[i - 1]).norm());
+    for (const auto& b : ends) {
+      for (const auto& e : ends) {
+        const auto full = cubic_spline_tangents(p, h, b, e);
+        for (size_t j = 0; j < count; ++j) {
+          const Vec3 one = cubic_spline_tangent_at(p, h, b, e, j);
+          EXPECT_LT((one - full[j]).norm(), 1e-12 * (1.0 + full[j].norm()))
+              << count << " points, row " << j;
+        }
+      }
+    }
+  }
 }
 
 TEST(CubicSpline, GlobalPassesThroughPointsAndIsC2) {
