@@ -16,8 +16,12 @@ TEST(InterruptedRun, SigintStopsAtABlockAndFinishesTheReport) {
   write_file(program, "G90 G94 F20000\nR1=0\nSTART:\nG1 X=R1 MOD 50\nR1=R1+1\nIF R1<100000000 GOTOB START\nM30\n");
   const auto json = dir.path / "run.json";
   const auto err = dir.path / "stderr.txt";
-  // --preserve-status: the exit code is drycut's own, not timeout's 124.
-  const CliRun r = drycut::testing::run_shell("timeout --preserve-status -s INT 0.5 " +
+  // --preserve-status: the exit code is drycut's own, not timeout's 124. --foreground: timeout
+  // signals drycut alone; without it, it signals drycut and then its whole process group, and a
+  // second SIGINT that arrives after the first was handled takes the default action (the handler
+  // is SA_RESETHAND: a second Ctrl-C ends the process), exit 130 with the report cut short — a
+  // flaky failure on a loaded machine.
+  const CliRun r = drycut::testing::run_shell("timeout --foreground --preserve-status -s INT 0.5 " +
                                               drycut::testing::drycut_command("run -q --json " + quoted(json) + " " +
                                                                               quoted(program)) +
                                               " 2>" + quoted(err) + " >/dev/null");
