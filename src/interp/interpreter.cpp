@@ -104,6 +104,7 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   if (!block.system_writes.empty()) apply_system_writes(block);
   apply_g_words(ctx);
   if (!block.commands.empty()) apply_commands(ctx);
+  ctx.feed_before = state_.feed;
   apply_addresses(ctx);
   if (!block.axis_words.empty()) apply_axis_words(ctx);
   if (!block.m.empty()) apply_m_words(ctx);
@@ -114,9 +115,10 @@ void Interpreter::execute_block(const parser::Block& block, GeometryPositioning 
   // anyway), and the motion command in force before it (often the G0 of the approach) applies
   // again from the next block.
   const MotionMode modal_motion = state_.motion;
-  if (ctx.tapping_chuck) state_.motion = MotionMode::Linear;
-  execute_motion(ctx);
-  if (ctx.tapping_chuck) state_.motion = modal_motion;
+  // A SAR block (G147 ... G348, non-modal) runs its own contour, whatever group 1 says.
+  if (ctx.tapping_chuck || ctx.smooth_approach) state_.motion = MotionMode::Linear;
+  execute_motion(ctx, modal_motion);
+  if (ctx.tapping_chuck || ctx.smooth_approach) state_.motion = modal_motion;
   if (ctx.stop == StopKind::ProgramStop || ctx.stop == StopKind::OptionalStop) settle_spindles_at_stop();
   warn_unused_corner(ctx);
   if (!ctx.simple) block_between_compressible_ = true;
@@ -177,6 +179,9 @@ void Interpreter::apply_g_words(BlockContext& ctx) {
       case 9: ctx.exact_stop = true; continue;
       case 53: case 153: ctx.suppress_offsets = true; continue;
       case 74: case 75: ctx.home_move = code; continue;
+      case 147: case 148: case 247: case 248: case 347: case 348: ctx.smooth_approach = code; continue;
+      case 140: case 141: case 142: case 143: state_.sar_side_rule = code; continue;
+      case 340: case 341: state_.sar_in_plane = code == 341; continue;
       case 58: case 59: ctx.axial_offset = code; continue;
       case 110: ctx.pole = PoleReference::LastPosition; continue;
       case 111: ctx.pole = PoleReference::WorkpieceZero; continue;
@@ -299,6 +304,7 @@ void Interpreter::apply_addresses(BlockContext& ctx) {
     if (axis_index(n) >= 0 && parser::is_linear_value_mode(a.mode) && extra_axes_.index(n) < 0) continue;
     if (apply_smoothing_address(ctx, a)) continue;
     if (apply_corner_address(ctx, a)) continue;
+    if (apply_smooth_approach_address(ctx, a)) continue;
     if (n == "F") {
       apply_feed_address(ctx, a);
     } else if (n == "FZ") {
@@ -529,6 +535,7 @@ void Interpreter::start_thread_block(BlockContext& ctx) {
 }
 
 void Interpreter::emit(PathElement&& element) {
+  if (sar_pending_ && !sar_releasing_ && hold_for_smooth_approach(element)) return;
   if (run_up_.pending && element.is_motion() && !element.rapid) wait_for_spindle_speed(element);
   if (run_up_mark_ != 0) element.run_up_start = std::exchange(run_up_mark_, 0);
   if (compensation_selection_pending_ && element.is_motion() && element.curve) defer_compensation_selection(element);
@@ -655,7 +662,7 @@ bool Interpreter::execute_axis_instruction(BlockContext& ctx) {
   return false;
 }
 
-void Interpreter::execute_motion(BlockContext& ctx) {
+void Interpreter::execute_motion(BlockContext& ctx, MotionMode modal_motion) {
   if (ctx.compensation_changed && state_.compensation != CompensationSide::None && !tools_.has_tool())
     raise(ctx, 10750, "no tool is active", ctx.compensation_column);
   emit_dynamics_change(ctx);
@@ -693,6 +700,9 @@ void Interpreter::execute_motion(BlockContext& ctx) {
 
   if (ctx.geometry_positioning == GeometryPositioning::Alone || ctx.geometry_positioning == GeometryPositioning::AloneAsync) {
     position_geometry_axes(ctx, std::move(extra));
+  } else if (ctx.smooth_approach && has_axis) {
+    if (!extra.empty()) warn_once(ctx, "extra axes in a smooth approach/retraction block (they move without time)", 0);
+    execute_smooth_approach(ctx, modal_motion);
   } else if (has_axis || full_circle) {
     move_to_target(ctx, std::move(extra));
   } else if (!extra.empty() && state_.spline_mode()) {
@@ -745,6 +755,7 @@ void Interpreter::emit_block_end(BlockContext& ctx) {
 }
 
 void Interpreter::finish() {
+  if (sar_pending_) release_smooth_approach(nullptr);
   if (spline_.active()) end_spline_run(nullptr);
   // A run stopped by an alarm inside a recorded contour: what came before goes on downstream.
   stop_recording();

@@ -23,6 +23,7 @@
 #include "interp/modal_state.hpp"
 #include "interp/path_element.hpp"
 #include "interp/spline_block_quota.hpp"
+#include "interp/smooth_approach.hpp"
 #include "interp/spline_run.hpp"
 #include "interp/tool_state.hpp"
 #include "machine/alarm.hpp"
@@ -179,7 +180,7 @@ class Interpreter {
   void mark_running(const PositioningMove& m, double from, double travel);
   void wait_for(BlockContext& ctx, const std::string& axis);
   void emit_positioning(BlockContext& ctx);
-  void execute_motion(BlockContext& ctx);
+  void execute_motion(BlockContext& ctx, MotionMode modal_motion);
   void emit_dynamics_change(BlockContext& ctx);  // transition, acceleration, limits changed
   // Frame instruction, G58/G59, G25/G26, pole or G74/G75: the block's axis words are data of
   // the instruction, not a path end point. True when the block was one of them (done).
@@ -264,6 +265,15 @@ class Interpreter {
   void tilt_compensation_plane(const BlockContext& ctx, CompensationRequest& request) const;
   Target target_position(BlockContext& ctx);
   void apply_contour_angle(const BlockContext& ctx, const Frame& frame, Target& t);  // ANG= with one end coordinate
+  // Smooth approach and retraction G147..G348 (interpreter_smooth_approach.cpp, smooth_approach.hpp):
+  // DISR/DISCL/FAD/DISRP words; the SAR block's movements (an approach waits for the next
+  // motion's start direction: held in emit until it comes).
+  bool apply_smooth_approach_address(BlockContext& ctx, const parser::AddressWord& a);
+  void execute_smooth_approach(BlockContext& ctx, MotionMode modal_motion);
+  bool hold_for_smooth_approach(PathElement& element);
+  void release_smooth_approach(const Eigen::Vector3d* next_tangent);
+  void emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,
+                                   const SarSpeeds& speeds, CompensationSide contour_side, CompensationSide other_side);
   // Two straight lines by angles: holds the first ANG=, then runs the first line to the corner.
   bool hold_contour_angle(BlockContext& ctx, bool has_axis);
   void run_to_contour_corner(BlockContext& ctx);
@@ -361,6 +371,17 @@ class Interpreter {
   DynamicsMode last_dynamics_;
   bool ended_ = false;
   std::optional<double> held_angle_deg_;  // ANG= of a block without end point: the first of two lines
+  struct PendingApproach {
+    PathElement element;  // the SAR block's straight move P0 -> P4 (its template for the pieces)
+    SarRequest request;
+    Eigen::Vector3d normal;
+    double radius = 0.0;
+    int compensation_side = 0;
+    SarSpeeds speeds;
+  };
+  std::optional<PendingApproach> sar_pending_;  // a SAR approach waiting for the next motion
+  std::vector<PathElement> sar_held_;             // elements emitted meanwhile (after it in order)
+  bool sar_releasing_ = false;
   // RND/CHF/CHR (and FRC) written in that block: the corner where the two lines meet.
   CornerWords held_corner_;
   double nominal_time_s_ = 0.0;  // path length / feed and dwells so far (timers, add_nominal_time)

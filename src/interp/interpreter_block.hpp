@@ -170,6 +170,8 @@ struct Interpreter::BlockContext {
   std::optional<double> block_feed;  // F in this block (not a G4 block)
   std::optional<double> nonmodal_feed;  // FB= of this block: its feed only, F stays modal
   bool contour_corner_done = false;     // the first of two ANG= lines ran: the angle is used
+  int smooth_approach = 0;  // G147/G148/G247/G248/G347/G348 in this block (non-modal, group 2)
+  double feed_before = 0.0;  // the modal F before this block's words
   // Extra axes written in this block (synchronized axes): index into the profile, the word.
   std::vector<std::pair<size_t, const parser::AddressWord*>> extra_words;
   std::vector<PositioningMove> positioning;  // POS/POSA/SPOS/SPOSA of this block

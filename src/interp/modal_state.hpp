@@ -77,6 +77,15 @@ struct ModalState {
   bool collision_detection = false;   // CDON / CDOF
   ContourFeed contour_feed = ContourFeed::Contour;  // CFC / CFTCP / CFIN
   double disc = 0.0;                  // DISC=
+  // Smooth approach and retraction (smooth_approach.hpp): G140..G143, G340/G341 and the values
+  // last programmed with DISR=, DISCL= (DISCL=AC(): absolute), FAD= (0: none), kept as the
+  // control keeps them [I: modal].
+  int sar_side_rule = 140;
+  bool sar_in_plane = false;
+  double sar_disr = 0.0;
+  double sar_discl = 0.0;
+  bool sar_discl_absolute = false;
+  double sar_fad = 0.0;
   double offn_mm = 0.0;            // OFFN=: contour offset added to the tool radius under G41/G42
   Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD / COMPSURF
   DiameterState diameter;             // DIAMON/DIAMOF/DIAM90/DIAMCYCOF, DIAMONA[ax] ... (MD20100)

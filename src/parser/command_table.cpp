@@ -54,7 +54,6 @@ constexpr std::array kCommands{
     CommandEntry{"TCOFR", M},   CommandEntry{"CPRECON", N}, CommandEntry{"CPRECOF", N},
     CommandEntry{"SOFTA", N},   CommandEntry{"BRISKA", N},  
     CommandEntry{"WORKPIECE", E}, CommandEntry{"MCALL", M},
-    CommandEntry{"DISCL", N},
     CommandEntry{"EXTCALL", M}, CommandEntry{"PCALL", M},
     CommandEntry{"POS", M},     CommandEntry{"POSA", M},    CommandEntry{"SPOSA", M},
     CommandEntry{"WAITP", M},   CommandEntry{"WAITS", M},
@@ -101,7 +100,7 @@ constexpr std::array kCommands{
     // (kAddresses below), as are the corner words RND, RNDM, CHF, CHR, FRC, FRCM.
     // Smooth approach and retraction parameters, tool offsets along the
     // path, lead/tilt angles, continuous measurement (Fundamentals, Job Planning).
-    CommandEntry{"DISR", N},    CommandEntry{"DISRP", N},   CommandEntry{"FAD", N},
+    CommandEntry{"DISRP", N},
     CommandEntry{"TOFFR", N},   CommandEntry{"LEAD", N},
     CommandEntry{"TILT", N},    CommandEntry{"MEAW", N},    CommandEntry{"MEAC", N},
     CommandEntry{"RTLION", N},  CommandEntry{"RTLIOF", N},
@@ -225,11 +224,12 @@ constexpr std::array kCommands{
 };
 
 // Addresses with a value. Single letters plus the extended addresses of the 840D.
-constexpr std::array<std::string_view, 57> kAddresses{
+constexpr std::array<std::string_view, 60> kAddresses{
     "X", "Y", "Z", "A", "B", "C", "U", "V", "W", "I", "J", "K", "F", "S", "D", "H", "T", "E", "Q",
     "I1", "J1", "K1", "PW", "SD", "PL", "CR", "AR", "AP", "RP", "RPL", "TURN", "DISC", "OFFN", "S1",
     "S2", "H1", "H2", "A1", "A2", "ADIS", "ADISPOS", "LIMS", "SF", "OVR",
-    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC", "ANG", "FP"};
+    "CTOL", "ATOL", "RND", "RNDM", "CHF", "CHR", "FRC", "FRCM", "FZ", "FB", "SVC", "ANG", "FP",
+    "DISR", "DISCL", "FAD"};
 
 // Words of the language itself, for the misspelling check.
 constexpr std::array<std::string_view, 33> kKeywords{
@@ -329,9 +329,10 @@ Support g_code_support(int64_t g) {
     case 5: case 7: case 8:
     case 74: case 75:  // reference point / fixed point approach (the interpreter)
       return M;
-    case 140: case 141:
-    case 142: case 143: case 147: case 148: case 247: case 248:
-    case 340: case 341: case 347: case 348: case 460: case 461: case 462: case 62: case 621:
+    case 140: case 141: case 142: case 143: case 147: case 148: case 247: case 248:
+    case 340: case 341: case 347: case 348:  // smooth approach and retraction (interp/smooth_approach.hpp)
+      return M;
+    case 460: case 461: case 462: case 62: case 621:
     case 751: case 752: case 810: case 811: case 812: case 813: case 814: case 815: case 816:
     case 817: case 818: case 819: case 820: case 821: case 822: case 823: case 824: case 825:
     case 826: case 827: case 828: case 829: case 931: case 942: case 952:

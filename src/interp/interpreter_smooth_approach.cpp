@@ -1,0 +1,197 @@
+// Smooth approach and retraction (SAR, G147 ... G348): the interpreter's part. The geometry is
+// smooth_approach.hpp's; here the block's words, the speeds and the order of the elements.
+// Speeds (PGsl Fundamentals, "Smooth approach and retraction", approach and retraction
+// velocities): on approach the movements up to the clearance (P0 -> P2) run at the speed in force
+// before the SAR block (rapid under G0), the infeed below the clearance (G341) or the descending
+// contour (G340) at FAD, the rest at the block's F (FAD missing: at F). On retraction the roles
+// swap: the contour at the speed before the block, FAD where the approach had it, and the moves
+// from the clearance to the end point at the block's own speed (rapid when the block's motion is
+// G0).
+#include <cmath>
+
+#include "interp/geometry/arc_curve.hpp"
+#include "interp/interpreter_block.hpp"
+
+namespace drycut::interp {
+
+using namespace detail;
+
+namespace {
+
+// The plane normal of the element's compensation plane, in the elements' coordinates.
+Vector3d plane_normal(const CompensationRequest& c) {
+  if (c.tilted) return c.tilted_normal.normalized();
+  Vector3d n = Vector3d::Zero();
+  n[c.plane_normal_axis] = 1.0;
+  return n;
+}
+
+int side_sign(CompensationSide side) {
+  return side == CompensationSide::Left ? 1 : side == CompensationSide::Right ? -1 : 0;
+}
+
+}  // namespace
+
+bool Interpreter::apply_smooth_approach_address(BlockContext& ctx, const parser::AddressWord& a) {
+  const std::string_view n = a.name;
+  if (n == "DISR") {
+    state_.sar_disr = a.value * geometry_unit();
+  } else if (n == "DISCL") {
+    state_.sar_discl = a.value * geometry_unit();
+    state_.sar_discl_absolute = a.mode == parser::ValueMode::Absolute;
+  } else if (n == "FAD") {
+    if (a.value < 0) raise(ctx, 14800, "FAD=" + std::to_string(a.value), a.column);
+    state_.sar_fad = a.value;
+  } else if (n == "DISRP") {
+    warn_once(ctx, "DISRP= (the retraction plane of SAR: P1 is taken at the start/end point's height)", a.column);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_motion) {
+  const bool approach = ctx.smooth_approach % 10 == 7;
+  const Target programmed = target_position(ctx);
+  const Vector3d target = programmed.machine;
+  length_applied_ = programmed.length_after;
+  check_limits(ctx, target);
+  if (spline_.active()) end_spline_run(nullptr);
+  const Vector3d start = position_;
+  PathElement e = build_line(ctx, target);  // the block's own feed (state_.motion is G1 here)
+  e.label = "G" + std::to_string(ctx.smooth_approach);
+  const Vector3d normal = plane_normal(e.compensation);
+
+  SarRequest request;
+  request.shape = static_cast<SarShape>(ctx.smooth_approach / 100);
+  request.in_plane = state_.sar_in_plane;
+  request.side_rule = state_.sar_side_rule;
+  request.disr_mm = state_.sar_disr;
+  // The clearance is measured from the plane of the contour point: P4 on approach, the contour
+  // end (where the tool is) on retraction.
+  const Vector3d contour_point = approach ? target : start;
+  request.clearance_height = normal.dot(contour_point) + state_.sar_discl;
+  if (state_.sar_discl_absolute) {
+    // DISCL=AC(v): the position v of the axis along the normal, in the workpiece system.
+    Vector3d w = programmed.workpiece;
+    w[e.compensation.plane_normal_axis] = state_.sar_discl;
+    request.clearance_height = normal.dot(block_frame(ctx).to_outer(w) + programmed.length_after);
+  }
+
+  // Speeds: the feed before the block (its F and feed type), FAD and the block's own.
+  SarSpeeds speeds;
+  const auto feed_at = [&](double f) {
+    const double own = state_.feed;
+    state_.feed = f;
+    const double v = feed_mm_s(ctx, (target - start).norm(), target - start);
+    state_.feed = own;
+    return v;
+  };
+  speeds.before_rapid = modal_motion == MotionMode::Rapid;
+  speeds.before_mm_s = ctx.feed_before > 0 ? feed_at(ctx.feed_before) : e.feed_mm_s;
+  speeds.fad_mm_s = state_.sar_fad > 0 ? feed_at(state_.sar_fad) : 0.0;
+  speeds.own_rapid = modal_motion == MotionMode::Rapid;
+  speeds.own_mm_s = e.feed_mm_s;
+  position_ = target;
+
+  const double radius = e.compensation.radius_mm;
+  if (approach) {
+    // The SAR block selects the compensation itself: the next block is not a selection block.
+    compensation_selection_pending_ = false;
+    const int side = side_sign(e.compensation.side);
+    sar_pending_ = PendingApproach{std::move(e), request, normal, radius, side, speeds};
+    return;
+  }
+  // Retraction: from the contour's end along its last direction. With G40 in the block the
+  // contour still runs compensated on the side it had (the movements after it on the tool centre).
+  CompensationSide before = ctx.compensation_before;
+  if (before != CompensationSide::None && frame_mirrors_plane(block_frame(ctx)))
+    before = before == CompensationSide::Left ? CompensationSide::Right : CompensationSide::Left;
+  const CompensationSide after = e.compensation.side;
+  const int geometry_side = after == CompensationSide::None ? side_sign(before) : 0;
+  const bool names_plane = block_names_plane_axis_;
+  const Vector3d p0_plane = target;
+  const auto pieces = has_last_tangent_
+                          ? retraction_pieces(start, last_tangent_, names_plane ? &p0_plane : nullptr,
+                                              normal.dot(target), normal, request, radius, geometry_side)
+                          : std::vector<SarPiece>{};
+  if (pieces.empty()) {
+    emit(std::move(e));
+    return;
+  }
+  position_ = pieces.back().curve->end();
+  check_limits(ctx, position_);
+  emit_smooth_approach_pieces(e, pieces, speeds, before == CompensationSide::None ? after : before, after);
+}
+
+bool Interpreter::hold_for_smooth_approach(PathElement& element) {
+  if (element.is_motion() && element.curve && element.curve->length() > 0) {
+    const Vector3d t = element.curve->at(0).tangent;
+    release_smooth_approach(&t);
+    return false;
+  }
+  sar_held_.push_back(std::move(element));
+  return true;
+}
+
+void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
+  PendingApproach pending = std::move(*sar_pending_);
+  sar_pending_.reset();
+  sar_releasing_ = true;
+  const Vector3d p0 = pending.element.curve->start(), p4 = pending.element.curve->end();
+  const auto pieces = next_tangent ? approach_pieces(p0, p4, *next_tangent, pending.normal, pending.request,
+                                                     pending.radius, pending.compensation_side)
+                                   : std::vector<SarPiece>{};
+  if (pieces.empty()) {
+    emit(std::move(pending.element));  // no contour to join: the straight move
+  } else {
+    const CompensationSide side = pending.element.compensation.side;
+    emit_smooth_approach_pieces(pending.element, pieces, pending.speeds, side, side);
+  }
+  std::vector<PathElement> held = std::move(sar_held_);
+  sar_held_.clear();
+  sar_releasing_ = false;
+  for (auto& h : held) emit(std::move(h));
+}
+
+void Interpreter::emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,
+                                              const SarSpeeds& speeds, CompensationSide contour_side,
+                                              CompensationSide other_side) {
+  // Approach: the contour is the block's end (its F); retraction: the contour comes first.
+  const bool approach = pieces.back().contour;
+  // On retraction the compensation ends with the first move in the plane after the contour: the
+  // rise before it stays a move of the compensated tool centre (a G40 in a move along the normal
+  // alone would spread that move over the contour).
+  bool compensated = true;
+  const Vector3d normal = plane_normal(block_element.compensation);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    PathElement p = block_element;
+    p.curve = pieces[i].curve;
+    p.kind = dynamic_cast<const geometry::ArcCurve*>(p.curve.get()) ? ElementKind::Arc : ElementKind::Line;
+    // Not `inserted`: each sub-movement ends where the SAR geometry puts it (in step with the
+    // program for the compensation's normal axis), not a joint the compensation made.
+    const Vector3d chord = p.curve->end() - p.curve->start();
+    if (!pieces[i].contour && (chord - normal * normal.dot(chord)).norm() > 1e-9) compensated = false;
+    p.compensation.side = pieces[i].contour || (!approach && compensated) ? contour_side : other_side;
+    if (i > 0) p.run_up_start = 0;
+    bool rapid = false;
+    double feed = speeds.own_mm_s;
+    switch (pieces[i].speed) {
+      case SarSpeed::Before:
+        rapid = approach && speeds.before_rapid;
+        feed = speeds.before_mm_s;
+        break;
+      case SarSpeed::Fad:
+        feed = speeds.fad_mm_s > 0 ? speeds.fad_mm_s : approach ? speeds.own_mm_s : speeds.before_mm_s;
+        break;
+      case SarSpeed::Own:
+        rapid = !approach && speeds.own_rapid;
+        break;
+    }
+    p.rapid = rapid;
+    p.feed_mm_s = rapid ? 0.0 : feed;
+    emit(std::move(p));
+  }
+}
+
+}  // namespace drycut::interp
