@@ -21,7 +21,10 @@
 // 1. The whole element is ONE piece; its segment gets the limits of its worst point.
 // 2. The piece is accepted when that worst case is within bound_tolerance (2 %) of the better
 //    end's velocity bound (the bound includes F and the short-block limit, so an arc whose
-//    varying limits all stay above F is never cut, however long) and, where a ramp can run
+//    varying limits all stay above F is never cut, however long) and, on a circle whose bound
+//    the geometry sets, of the bound at its BEST POINT too (per axis the smallest |t_i|, |κ_i|,
+//    |P'''_i| over the piece: the best it offers anywhere; a full circle from a quadrant point
+//    has both ends at its worst and its best limits at 45 degrees), and, where a ramp can run
 //    (within the distance of a ramp from rest to the bound from either end of the element),
 //    within ramp_tolerance (5 %) for the ramp jerk and for the ramp acceleration; under SOFT a
 //    ramp up to v is at the acceleration limit only for the part of Δv above a²/j, so there
