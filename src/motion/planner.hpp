@@ -123,7 +123,8 @@
 // nodes and samples between them stay within 2 %. Jerk is limited inside each closed-form
 // segment profile and by the curvature-jerk constraint at constant speed; where a ramp meets
 // a limit, the opposite ramp or a block transition the acceleration may step (jerk is not
-// checked, and PATH_TRANS_JERK_LIM at curvature steps is not modelled).
+// checked there; at a step of the curvature between blocks the junction velocity is the one
+// MD32432 PATH_TRANS_JERK_LIM allows, path_constraints.hpp, the step itself is taken at once).
 #include <deque>
 #include <functional>
 #include <memory>
