@@ -700,7 +700,7 @@ void Interpreter::execute_motion(BlockContext& ctx, MotionMode modal_motion) {
 
   if (ctx.geometry_positioning == GeometryPositioning::Alone || ctx.geometry_positioning == GeometryPositioning::AloneAsync) {
     position_geometry_axes(ctx, std::move(extra));
-  } else if (ctx.smooth_approach && has_axis) {
+  } else if (ctx.smooth_approach && (has_axis || ctx.smooth_approach % 10 == 7)) {
     if (!extra.empty()) warn_once(ctx, "extra axes in a smooth approach/retraction block (they move without time)", 0);
     execute_smooth_approach(ctx, modal_motion);
   } else if (has_axis || full_circle) {

@@ -273,7 +273,7 @@ class Interpreter {
   bool hold_for_smooth_approach(PathElement& element);
   void release_smooth_approach(const Eigen::Vector3d* next_tangent);
   void emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,
-                                   const SarSpeeds& speeds, CompensationSide contour_side, CompensationSide other_side);
+                                   const SarSpeeds& speeds);
   // Two straight lines by angles: holds the first ANG=, then runs the first line to the corner.
   bool hold_contour_angle(BlockContext& ctx, bool has_axis);
   void run_to_contour_corner(BlockContext& ctx);
@@ -378,6 +378,9 @@ class Interpreter {
     double radius = 0.0;
     int compensation_side = 0;
     SarSpeeds speeds;
+    // The SAR block named no axis of the plane: P4 is the next motion block's end point, its
+    // move the SAR contour's (Fundamentals, "Programming of end point P4").
+    bool end_from_next = false;
   };
   std::optional<PendingApproach> sar_pending_;  // a SAR approach waiting for the next motion
   std::vector<PathElement> sar_held_;             // elements emitted meanwhile (after it in order)

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "interp/geometry/arc_curve.hpp"
+#include "interp/geometry/line_curve.hpp"
 #include "interp/interpreter_block.hpp"
 
 namespace drycut::interp {
@@ -42,6 +43,7 @@ bool Interpreter::apply_smooth_approach_address(BlockContext& ctx, const parser:
   } else if (n == "FAD") {
     if (a.value < 0) raise(ctx, 14800, "FAD=" + std::to_string(a.value), a.column);
     state_.sar_fad = a.value;
+    state_.sar_fad_type = a.mode == parser::ValueMode::PerMinute ? 94 : a.mode == parser::ValueMode::PerRevolution ? 95 : 0;
   } else if (n == "DISRP") {
     warn_once(ctx, "DISRP= (the retraction plane of SAR: P1 is taken at the start/end point's height)", a.column);
   } else {
@@ -80,16 +82,19 @@ void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_mo
 
   // Speeds: the feed before the block (its F and feed type), FAD and the block's own.
   SarSpeeds speeds;
-  const auto feed_at = [&](double f) {
+  const auto feed_at = [&](double f, int type = 0) {
     const double own = state_.feed;
+    const FeedMode own_mode = state_.feed_mode;
     state_.feed = f;
+    if (type != 0) state_.feed_mode = type == 94 ? FeedMode::PerMinute : FeedMode::PerRevolution;
     const double v = feed_mm_s(ctx, (target - start).norm(), target - start);
     state_.feed = own;
+    state_.feed_mode = own_mode;
     return v;
   };
   speeds.before_rapid = modal_motion == MotionMode::Rapid;
   speeds.before_mm_s = ctx.feed_before > 0 ? feed_at(ctx.feed_before) : e.feed_mm_s;
-  speeds.fad_mm_s = state_.sar_fad > 0 ? feed_at(state_.sar_fad) : 0.0;
+  speeds.fad_mm_s = state_.sar_fad > 0 ? feed_at(state_.sar_fad, state_.sar_fad_type) : 0.0;
   speeds.own_rapid = modal_motion == MotionMode::Rapid;
   speeds.own_mm_s = e.feed_mm_s;
   position_ = target;
@@ -99,32 +104,40 @@ void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_mo
     // The SAR block selects the compensation itself: the next block is not a selection block.
     compensation_selection_pending_ = false;
     const int side = side_sign(e.compensation.side);
-    sar_pending_ = PendingApproach{std::move(e), request, normal, radius, side, speeds};
+    sar_pending_ = PendingApproach{std::move(e), request, normal, radius, side, speeds, !block_names_plane_axis_};
     return;
   }
   // Retraction: from the contour's end along its last direction. With G40 in the block the
-  // contour still runs compensated on the side it had (the movements after it on the tool centre).
+  // movements run on the tool centre, the compensation off; kept on, on the contour, compensated.
   CompensationSide before = ctx.compensation_before;
   if (before != CompensationSide::None && frame_mirrors_plane(block_frame(ctx)))
     before = before == CompensationSide::Left ? CompensationSide::Right : CompensationSide::Left;
   const CompensationSide after = e.compensation.side;
-  const int geometry_side = after == CompensationSide::None ? side_sign(before) : 0;
-  const bool names_plane = block_names_plane_axis_;
+  const bool deselects = before != CompensationSide::None && after == CompensationSide::None;
   const Vector3d p0_plane = target;
-  const auto pieces = has_last_tangent_
-                          ? retraction_pieces(start, last_tangent_, names_plane ? &p0_plane : nullptr,
-                                              normal.dot(target), normal, request, radius, geometry_side)
-                          : std::vector<SarPiece>{};
+  const auto pieces =
+      has_last_tangent_
+          ? retraction_pieces(start, last_tangent_, block_names_plane_axis_ ? &p0_plane : nullptr, normal.dot(target),
+                              normal, request, radius, side_sign(deselects ? before : after), deselects)
+          : std::vector<SarPiece>{};
   if (pieces.empty()) {
+    warn_once(ctx, "smooth retraction without a contour direction in the plane (a straight move)", 0);
     emit(std::move(e));
     return;
   }
   position_ = pieces.back().curve->end();
   check_limits(ctx, position_);
-  emit_smooth_approach_pieces(e, pieces, speeds, before == CompensationSide::None ? after : before, after);
+  emit_smooth_approach_pieces(e, pieces, speeds);
 }
 
 bool Interpreter::hold_for_smooth_approach(PathElement& element) {
+  if (element.is_motion() && element.curve && element.curve->length() > 0 && sar_pending_->end_from_next) {
+    // Its end point is P4; the SAR contour replaces its move, the next block gives the tangent.
+    PathElement& sar = sar_pending_->element;
+    sar.curve = std::make_shared<geometry::LineCurve>(sar.curve->start(), element.curve->end());
+    sar_pending_->end_from_next = false;
+    return true;
+  }
   if (element.is_motion() && element.curve && element.curve->length() > 0) {
     const Vector3d t = element.curve->at(0).tangent;
     release_smooth_approach(&t);
@@ -143,10 +156,16 @@ void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
                                                      pending.radius, pending.compensation_side)
                                    : std::vector<SarPiece>{};
   if (pieces.empty()) {
+    if (next_tangent) {  // (a program that ends first needs no word)
+      const BlockRef& b = pending.element.source;
+      diagnostics_.warn(kNotModelled,
+                        "smooth approach: no approach contour (no direction in the plane, or a circle of DISR not "
+                        "larger than the tool radius from the side away from the tool): a straight move",
+                        {b.file_name(), b.line, 0}, b.text);
+    }
     emit(std::move(pending.element));  // no contour to join: the straight move
   } else {
-    const CompensationSide side = pending.element.compensation.side;
-    emit_smooth_approach_pieces(pending.element, pieces, pending.speeds, side, side);
+    emit_smooth_approach_pieces(pending.element, pieces, pending.speeds);
   }
   std::vector<PathElement> held = std::move(sar_held_);
   sar_held_.clear();
@@ -155,25 +174,21 @@ void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
 }
 
 void Interpreter::emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,
-                                              const SarSpeeds& speeds, CompensationSide contour_side,
-                                              CompensationSide other_side) {
-  // Approach: the contour is the block's end (its F); retraction: the contour comes first.
+                                              const SarSpeeds& speeds) {
+  // Approach: the contour is the block's end (its F); retraction: the contour comes first. Every
+  // piece keeps the block's compensation (on a retraction with G40: off, the pieces run on the
+  // tool centre).
   const bool approach = pieces.back().contour;
-  // On retraction the compensation ends with the first move in the plane after the contour: the
-  // rise before it stays a move of the compensated tool centre (a G40 in a move along the normal
-  // alone would spread that move over the contour).
-  bool compensated = true;
-  const Vector3d normal = plane_normal(block_element.compensation);
   for (size_t i = 0; i < pieces.size(); ++i) {
     PathElement p = block_element;
     p.curve = pieces[i].curve;
     p.kind = dynamic_cast<const geometry::ArcCurve*>(p.curve.get()) ? ElementKind::Arc : ElementKind::Line;
     // Not `inserted`: each sub-movement ends where the SAR geometry puts it (in step with the
     // program for the compensation's normal axis), not a joint the compensation made.
-    const Vector3d chord = p.curve->end() - p.curve->start();
-    if (!pieces[i].contour && (chord - normal * normal.dot(chord)).norm() > 1e-9) compensated = false;
-    p.compensation.side = pieces[i].contour || (!approach && compensated) ? contour_side : other_side;
     if (i > 0) p.run_up_start = 0;
+    // DISR sizes the tool-centre path: F (FAD) is the tool centre's feed on it, not a contour
+    // feed CFC would scale (drycut's reading [I]; the same on approach and retraction).
+    p.compensation.contour_feed = ContourFeed::ToolCentre;
     bool rapid = false;
     double feed = speeds.own_mm_s;
     switch (pieces[i].speed) {

@@ -86,6 +86,7 @@ struct ModalState {
   double sar_discl = 0.0;
   bool sar_discl_absolute = false;
   double sar_fad = 0.0;
+  int sar_fad_type = 0;  // FAD=PM(..): 94, FAD=PR(..): 95, 0: the active feed type
   double offn_mm = 0.0;            // OFFN=: contour offset added to the tool radius under G41/G42
   Compressor compressor = Compressor::Off;  // COMPOF / COMPON / COMPCURV / COMPCAD / COMPSURF
   DiameterState diameter;             // DIAMON/DIAMOF/DIAM90/DIAMCYCOF, DIAMONA[ax] ... (MD20100)

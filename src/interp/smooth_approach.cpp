@@ -33,8 +33,9 @@ double contour_radius(const SarRequest& r, double radius, int compensation_side,
   return side == compensation_side ? r.disr_mm + radius : r.disr_mm - radius;
 }
 
-void add_line(std::vector<SarPiece>& out, const Vec3& a, const Vec3& b, SarSpeed speed, bool contour = false) {
-  if ((b - a).norm() < kNoLength) return;
+void add_line(std::vector<SarPiece>& out, const Vec3& a, const Vec3& b, SarSpeed speed, bool contour = false,
+              bool keep_empty = false) {
+  if (!keep_empty && (b - a).norm() < kNoLength) return;
   out.push_back({std::make_shared<geometry::LineCurve>(a, b), speed, contour});
 }
 
@@ -79,7 +80,9 @@ std::vector<SarPiece> approach_pieces(const Vec3& p0, const Vec3& p4, const Vec3
   }
   const double h0 = n.dot(p0), h4 = n.dot(p4), hc = request.clearance_height;
   const Vec3 p1 = at_height(p3, h0, n);
-  add_line(out, p0, p1, SarSpeed::Before);
+  // Under compensation this move is the selection's approach: kept even without length (P0
+  // above the contour's start), the compensation moves the tool to the offset from there.
+  add_line(out, p0, p1, SarSpeed::Before, false, compensation_side != 0);
   const double contour_start = request.in_plane ? h4 : hc;
   if (request.in_plane) {
     add_line(out, p1, at_height(p3, hc, n), SarSpeed::Before);
@@ -100,7 +103,7 @@ std::vector<SarPiece> approach_pieces(const Vec3& p0, const Vec3& p4, const Vec3
 
 std::vector<SarPiece> retraction_pieces(const Vec3& p4, const Vec3& tangent, const Vec3* p0_in_plane,
                                         double p0_height, const Vec3& normal, const SarRequest& request,
-                                        double radius, int compensation_side) {
+                                        double radius, int compensation_side, bool on_tool_centre) {
   std::vector<SarPiece> out;
   const Vec3& n = normal;
   const Vec3 t_plane = in_plane(tangent, n);
@@ -110,31 +113,29 @@ std::vector<SarPiece> retraction_pieces(const Vec3& p4, const Vec3& tangent, con
   const Vec3 p0_guess = p0_in_plane ? at_height(*p0_in_plane, p0_height, n) : Vec3(p4 + left);
   const int side = side_of(request, compensation_side, p0_guess, p4, left);
   const double h4 = n.dot(p4), hc = request.clearance_height;
+  // On the tool centre (the block deselects the compensation): from the contour end's offset,
+  // the circle of radius DISR, the line of DISR + r. On the programmed contour otherwise.
+  const bool centre = on_tool_centre && compensation_side != 0;
+  const Vec3 start = centre ? Vec3(p4 + compensation_side * radius * left) : p4;
   // G340: the contour rises from P4 to the clearance (at FAD); G341: it stays in P4's plane
   // (at the speed before the block), the rise to the clearance follows at FAD.
   const double contour_end = request.in_plane ? h4 : hc;
   const SarSpeed contour_speed = request.in_plane ? SarSpeed::Before : SarSpeed::Fad;
   if (request.shape == SarShape::Line) {
-    const Vec3 p3 = p4 + (request.disr_mm + (compensation_side != 0 ? radius : 0.0)) * t;
-    add_line(out, p4, at_height(p3, contour_end, n), contour_speed, true);
+    const Vec3 p3 = start + (request.disr_mm + (compensation_side != 0 ? radius : 0.0)) * t;
+    add_line(out, start, at_height(p3, contour_end, n), contour_speed, true);
   } else {
-    const double r = contour_radius(request, radius, compensation_side, side);
+    const double r = centre ? request.disr_mm : contour_radius(request, radius, compensation_side, side);
     if (!(r > kNoLength)) return out;
-    add_arc(out, p4 + side * r * left, p4, n, sweep_of(request.shape, side), contour_end - h4, contour_speed);
+    add_arc(out, start + side * r * left, start, n, sweep_of(request.shape, side), contour_end - h4, contour_speed);
   }
   if (out.empty()) return out;
-  // The tool centre at the contour's end: the movements after it are the tool centre's.
-  const geometry::Curve& contour = *out.back().curve;
-  Vec3 q3 = contour.end();
-  if (compensation_side != 0) {
-    const Vec3 d = in_plane(contour.end_tangent(), n);
-    if (d.norm() > 1e-12) q3 += compensation_side * radius * n.cross(d.normalized());
-  }
-  const Vec3 q2 = at_height(q3, hc, n);
-  if (request.in_plane) add_line(out, q3, q2, SarSpeed::Fad);
-  const Vec3 q1 = at_height(q3, p0_height, n);
-  add_line(out, q2, q1, SarSpeed::Own);
-  add_line(out, q1, p0_in_plane ? at_height(*p0_in_plane, p0_height, n) : q1, SarSpeed::Own);
+  const Vec3 p3 = out.back().curve->end();
+  const Vec3 p2 = at_height(p3, hc, n);
+  if (request.in_plane) add_line(out, p3, p2, SarSpeed::Fad);
+  const Vec3 p1 = at_height(p3, p0_height, n);
+  add_line(out, p2, p1, SarSpeed::Own);
+  add_line(out, p1, p0_in_plane ? at_height(*p0_in_plane, p0_height, n) : p1, SarSpeed::Own);
   return out;
 }
 

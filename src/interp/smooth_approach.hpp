@@ -23,8 +23,9 @@
 //     G341: P0 -> P1 -> P2 (down to the clearance) -> P3 (down to P4's plane) -> P4 in the plane.
 // Retraction from the contour end P4 (the previous block's end, leaving along its end direction
 // t) to the SAR block's end point P0: the same pieces in reverse (the contour leaves P4 along t
-// and turns away to side s). With compensation the pieces after the contour run on the tool
-// centre: they start at the contour's offset end.
+// and turns away to side s). A block that deselects the compensation (G40 G248 ...) runs them on
+// the tool centre from the contour end's offset (circle radius DISR, line DISR + r), with the
+// compensation off; one that keeps it runs them on the programmed contour, compensated.
 // Pieces of no length are left out. A t with no component in the plane gives no pieces (the
 // caller moves straight).
 #include <vector>
@@ -71,6 +72,6 @@ std::vector<SarPiece> approach_pieces(const geometry::Vec3& p0, const geometry::
 std::vector<SarPiece> retraction_pieces(const geometry::Vec3& p4, const geometry::Vec3& tangent,
                                         const geometry::Vec3* p0_in_plane, double p0_height,
                                         const geometry::Vec3& normal, const SarRequest& request, double radius,
-                                        int compensation_side);
+                                        int compensation_side, bool on_tool_centre);
 
 }  // namespace drycut::interp

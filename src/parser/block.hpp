@@ -22,7 +22,8 @@ namespace drycut::parser {
 // radius programming for a specific axis"): a diameter or a radius whatever DIAMON/DIAMOF says.
 enum class ValueMode : uint8_t {
   Default, Absolute, Incremental, Direct, AbsolutePositive, AbsoluteNegative,
-  DiameterAbsolute /*DAC*/, DiameterIncremental /*DIC*/, RadiusAbsolute /*RAC*/, RadiusIncremental /*RIC*/
+  DiameterAbsolute /*DAC*/, DiameterIncremental /*DIC*/, RadiusAbsolute /*RAC*/, RadiusIncremental /*RIC*/,
+  PerMinute /*PM: FAD only*/, PerRevolution /*PR: FAD only*/
 };
 // AC and IC, or a blockwise diameter/radius value: the modes a linear axis accepts.
 constexpr bool is_linear_value_mode(ValueMode m) {

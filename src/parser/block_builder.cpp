@@ -148,6 +148,11 @@ class ProgramLoader::BlockBuilder {
         case Function::DiameterIncremental: mode = ValueMode::DiameterIncremental; break;
         case Function::RadiusAbsolute: mode = ValueMode::RadiusAbsolute; break;
         case Function::RadiusIncremental: mode = ValueMode::RadiusIncremental; break;
+        case Function::PerMinute: case Function::PerRevolution:
+          // The feed type of FAD alone (Fundamentals, "Smooth approach and retraction").
+          if (item.name != "FAD") throw LineError(12080, item.column, std::string(top.text) + "() only with FAD=");
+          mode = top.func == Function::PerMinute ? ValueMode::PerMinute : ValueMode::PerRevolution;
+          break;
         default: break;
       }
       if (mode != ValueMode::Default) return {l_.eval(l_.parsed_.pool.args[top.a]), mode};

@@ -45,6 +45,7 @@ enum class Function : uint8_t {
   AbsolutePositive, // ACP(x)
   AbsoluteNegative, // ACN(x)
   DiameterAbsolute, DiameterIncremental, RadiusAbsolute, RadiusIncremental,  // DAC DIC RAC RIC(x)
+  PerMinute, PerRevolution,  // PM(x), PR(x): the feed type of FAD= whatever G94/G95 says
   // Array value lists: only as the whole value of an array element assignment
   ArraySet,         // NAME[i]=SET(a, b, ...): consecutive elements from i
   ArrayRep,         // NAME[i]=REP(v): element i and all after it

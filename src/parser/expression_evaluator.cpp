@@ -163,6 +163,7 @@ class Evaluator {
       case Function::AbsoluteMode: case Function::IncrementalMode: case Function::DirectMode:
       case Function::AbsolutePositive: case Function::AbsoluteNegative: case Function::DiameterAbsolute:
       case Function::DiameterIncremental: case Function::RadiusAbsolute: case Function::RadiusIncremental:
+      case Function::PerMinute: case Function::PerRevolution:
         throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an address");
       case Function::ArraySet: case Function::ArrayRep:
         throw LineError(12080, n.column, std::string(n.text) + "() only allowed as the whole value of an array element");

@@ -61,6 +61,8 @@ constexpr std::array kFunctions{
     FunctionInfo{"DIC", F::DiameterIncremental, 1, 1, "incremental diameter value of one axis word"},
     FunctionInfo{"RAC", F::RadiusAbsolute, 1, 1, "absolute radius value of one axis word, whatever DIAMON/DIAMOF"},
     FunctionInfo{"RIC", F::RadiusIncremental, 1, 1, "incremental radius value of one axis word"},
+    FunctionInfo{"PM", F::PerMinute, 1, 1, "FAD=PM(f): the smooth approach's infeed feed per minute, whatever G94/G95"},
+    FunctionInfo{"PR", F::PerRevolution, 1, 1, "FAD=PR(f): the smooth approach's infeed feed per revolution, whatever G94/G95"},
     FunctionInfo{"CALCDAT", F::CircleData, 3, 3, "CALCDAT(points[n,2], 3 or 4, result[3]): circle centre and radius (4 points: mean of the centres of the triples, drycut's choice); FALSE when none"},
     FunctionInfo{"MATCH", F::Match, 2, 2, "first position (from 0) of a string in a string, -1 if none"},
     FunctionInfo{"ITOR", F::ToReal, 1, 1, "INT to REAL"},

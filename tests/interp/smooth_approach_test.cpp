@@ -93,18 +93,19 @@ TEST(SmoothApproach, AutomaticSideFollowsTheStartPoint) {
   EXPECT_LT(arc->sweep(), 0.0);
 }
 
-// Retraction after a contour ending at P4 going +Y, G41 (r = 5) left: G248 G341 DISR=10
-// DISCL=2 to P0 (0, 0, 10). The contour quadrant leaves P4 on a circle of radius 15 about
-// (10, 0) to (10, 15); its tool-centre end is 5 towards the centre (its end direction is -X,
-// left of it is -Y): (10, 10). Then up at FAD to Z-3, up to Z10, across to P0.
-TEST(SmoothApproach, RetractionQuadrantThenTheToolCentreMoves) {
+// Retraction after a contour ending at P4 going +Y, G41 (r = 5) left, with G40: G248 G341
+// DISR=10 DISCL=2 to P0 (0, 0, 10), on the tool centre. The contour end's offset is (20, 0); the
+// quadrant of radius 10 about (10, 0) leaves it to the left, to (10, 10). Then up at FAD to
+// Z-3, up to Z10, across to P0.
+TEST(SmoothApproach, RetractionWithG40RunsOnTheToolCentre) {
   const Vec3 p0(0, 0, 10);
   const auto pieces =
-      retraction_pieces(kP4, kUp, &p0, 10, kNormal, request(SarShape::Quadrant, true, 10, -3), 5, 1);
+      retraction_pieces(kP4, kUp, &p0, 10, kNormal, request(SarShape::Quadrant, true, 10, -3), 5, 1, true);
   ASSERT_EQ(pieces.size(), 4u);
   EXPECT_TRUE(pieces[0].contour);
   EXPECT_EQ(pieces[0].speed, SarSpeed::Before);
-  expect_near(pieces[0].curve->end(), Vec3(10, 15, -5));
+  expect_near(pieces[0].curve->start(), Vec3(20, 0, -5));
+  expect_near(pieces[0].curve->end(), Vec3(10, 10, -5));
   expect_near(pieces[1].curve->start(), Vec3(10, 10, -5));
   expect_near(pieces[1].curve->end(), Vec3(10, 10, -3));
   EXPECT_EQ(pieces[1].speed, SarSpeed::Fad);
@@ -113,10 +114,24 @@ TEST(SmoothApproach, RetractionQuadrantThenTheToolCentreMoves) {
   EXPECT_EQ(pieces[3].speed, SarSpeed::Own);
 }
 
+// The same retraction keeping G41 (no G40 in the block): on the programmed contour, the
+// quadrant of contour radius DISR + r = 15 about (10, 0) to (10, 15), the rest from there (the
+// compensation offsets it all).
+TEST(SmoothApproach, RetractionKeepingTheCompensationRunsOnTheContour) {
+  const Vec3 p0(0, 0, 10);
+  const auto pieces =
+      retraction_pieces(kP4, kUp, &p0, 10, kNormal, request(SarShape::Quadrant, true, 10, -3), 5, 1, false);
+  ASSERT_EQ(pieces.size(), 4u);
+  expect_near(pieces[0].curve->start(), kP4);
+  expect_near(pieces[0].curve->end(), Vec3(10, 15, -5));
+  expect_near(pieces[1].curve->end(), Vec3(10, 15, -3));
+  expect_near(pieces[3].curve->end(), p0);
+}
+
 // A retraction block that names no axis of the plane (G248 ... Z5) ends above the contour's end.
 TEST(SmoothApproach, RetractionWithoutPlaneAxesEndsAboveTheContour) {
   const auto pieces =
-      retraction_pieces(kP4, kUp, nullptr, 5, kNormal, request(SarShape::Line, false, 3, -3), 0, 0);
+      retraction_pieces(kP4, kUp, nullptr, 5, kNormal, request(SarShape::Line, false, 3, -3), 0, 0, true);
   ASSERT_EQ(pieces.size(), 2u);
   expect_near(pieces[0].curve->end(), Vec3(25, 3, -3));  // G340: rising along the line
   expect_near(pieces[1].curve->end(), Vec3(25, 3, 5));
