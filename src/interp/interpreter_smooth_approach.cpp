@@ -92,10 +92,9 @@ void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_mo
     state_.feed_mode = own_mode;
     return v;
   };
-  speeds.before_rapid = modal_motion == MotionMode::Rapid;
+  speeds.g0 = modal_motion == MotionMode::Rapid;
   speeds.before_mm_s = ctx.feed_before > 0 ? feed_at(ctx.feed_before) : e.feed_mm_s;
   speeds.fad_mm_s = state_.sar_fad > 0 ? feed_at(state_.sar_fad, state_.sar_fad_type) : 0.0;
-  speeds.own_rapid = modal_motion == MotionMode::Rapid;
   speeds.own_mm_s = e.feed_mm_s;
   position_ = target;
 
@@ -131,20 +130,20 @@ void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_mo
 }
 
 bool Interpreter::hold_for_smooth_approach(PathElement& element) {
-  if (element.is_motion() && element.curve && element.curve->length() > 0 && sar_pending_->end_from_next) {
+  if (!element.is_motion() || !element.curve || element.curve->length() <= 0) {
+    sar_held_.push_back(std::move(element));  // emitted after the approach, in order
+    return true;
+  }
+  if (sar_pending_->end_from_next) {
     // Its end point is P4; the SAR contour replaces its move, the next block gives the tangent.
     PathElement& sar = sar_pending_->element;
     sar.curve = std::make_shared<geometry::LineCurve>(sar.curve->start(), element.curve->end());
     sar_pending_->end_from_next = false;
     return true;
   }
-  if (element.is_motion() && element.curve && element.curve->length() > 0) {
-    const Vector3d t = element.curve->at(0).tangent;
-    release_smooth_approach(&t);
-    return false;
-  }
-  sar_held_.push_back(std::move(element));
-  return true;
+  const Vector3d t = element.curve->at(0).tangent;
+  release_smooth_approach(&t);
+  return false;
 }
 
 void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
@@ -193,14 +192,14 @@ void Interpreter::emit_smooth_approach_pieces(const PathElement& block_element, 
     double feed = speeds.own_mm_s;
     switch (pieces[i].speed) {
       case SarSpeed::Before:
-        rapid = approach && speeds.before_rapid;
+        rapid = approach && speeds.g0;
         feed = speeds.before_mm_s;
         break;
       case SarSpeed::Fad:
         feed = speeds.fad_mm_s > 0 ? speeds.fad_mm_s : approach ? speeds.own_mm_s : speeds.before_mm_s;
         break;
       case SarSpeed::Own:
-        rapid = !approach && speeds.own_rapid;
+        rapid = !approach && speeds.g0;
         break;
     }
     p.rapid = rapid;

@@ -84,12 +84,8 @@ std::vector<SarPiece> approach_pieces(const Vec3& p0, const Vec3& p4, const Vec3
   // above the contour's start), the compensation moves the tool to the offset from there.
   add_line(out, p0, p1, SarSpeed::Before, false, compensation_side != 0);
   const double contour_start = request.in_plane ? h4 : hc;
-  if (request.in_plane) {
-    add_line(out, p1, at_height(p3, hc, n), SarSpeed::Before);
-    add_line(out, at_height(p3, hc, n), at_height(p3, h4, n), SarSpeed::Fad);
-  } else {
-    add_line(out, p1, at_height(p3, hc, n), SarSpeed::Before);
-  }
+  add_line(out, p1, at_height(p3, hc, n), SarSpeed::Before);
+  if (request.in_plane) add_line(out, at_height(p3, hc, n), at_height(p3, h4, n), SarSpeed::Fad);
   // G340: the contour descends from the clearance to P4 at FAD; G341: in the plane at F.
   const SarSpeed contour_speed = request.in_plane ? SarSpeed::Own : SarSpeed::Fad;
   const Vec3 start = at_height(p3, contour_start, n);
@@ -110,6 +106,7 @@ std::vector<SarPiece> retraction_pieces(const Vec3& p4, const Vec3& tangent, con
   if (t_plane.norm() < 1e-9) return out;
   const Vec3 t = t_plane.normalized();
   const Vec3 left = n.cross(t);
+  // Without an end point in the plane G143 has no side to read: it leaves to the left.
   const Vec3 p0_guess = p0_in_plane ? at_height(*p0_in_plane, p0_height, n) : Vec3(p4 + left);
   const int side = side_of(request, compensation_side, p0_guess, p4, left);
   const double h4 = n.dot(p4), hc = request.clearance_height;

@@ -48,12 +48,13 @@ struct SarRequest {
   double clearance_height = 0.0;  // the height (along the normal) of P2/P3: P4's plane + DISCL
 };
 
-// The speeds the interpreter resolved for the SAR block (mm/s; a rapid flag where G0 applies).
+// The speeds the interpreter resolved for the SAR block (mm/s). g0: G0 is in force for the
+// block (group 1), so the movements up to the clearance (approach) or from it (retraction) are
+// rapid.
 struct SarSpeeds {
-  bool before_rapid = false;
+  bool g0 = false;
   double before_mm_s = 0.0;
   double fad_mm_s = 0.0;  // 0: no FAD
-  bool own_rapid = false;
   double own_mm_s = 0.0;
 };
 
