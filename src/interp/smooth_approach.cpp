@@ -53,6 +53,16 @@ void add_arc(std::vector<SarPiece>& out, const Vec3& centre, const Vec3& start, 
                  speed, true});
 }
 
+// The contour's direction t in the plane and its left normal n x t; false when t has no
+// component in the plane.
+bool plane_direction(const Vec3& tangent, const Vec3& n, Vec3& t, Vec3& left) {
+  const Vec3 t_plane = in_plane(tangent, n);
+  if (t_plane.norm() < 1e-9) return false;
+  t = t_plane.normalized();
+  left = n.cross(t);
+  return true;
+}
+
 double sweep_of(SarShape shape, int side) {
   return side * (shape == SarShape::Semicircle ? std::numbers::pi : std::numbers::pi / 2);
 }
@@ -63,10 +73,8 @@ std::vector<SarPiece> approach_pieces(const Vec3& p0, const Vec3& p4, const Vec3
                                       const SarRequest& request, double radius, int compensation_side) {
   std::vector<SarPiece> out;
   const Vec3& n = normal;
-  const Vec3 t_plane = in_plane(tangent, n);
-  if (t_plane.norm() < 1e-9) return out;
-  const Vec3 t = t_plane.normalized();
-  const Vec3 left = n.cross(t);
+  Vec3 t, left;
+  if (!plane_direction(tangent, n, t, left)) return out;
   const int side = side_of(request, compensation_side, p0, p4, left);
   // P3 in the plane, and the circle's centre.
   Vec3 p3 = p4, centre = p4;
@@ -102,10 +110,8 @@ std::vector<SarPiece> retraction_pieces(const Vec3& p4, const Vec3& tangent, con
                                         double radius, int compensation_side, bool on_tool_centre) {
   std::vector<SarPiece> out;
   const Vec3& n = normal;
-  const Vec3 t_plane = in_plane(tangent, n);
-  if (t_plane.norm() < 1e-9) return out;
-  const Vec3 t = t_plane.normalized();
-  const Vec3 left = n.cross(t);
+  Vec3 t, left;
+  if (!plane_direction(tangent, n, t, left)) return out;
   // Without an end point in the plane G143 has no side to read: it leaves to the left.
   const Vec3 p0_guess = p0_in_plane ? at_height(*p0_in_plane, p0_height, n) : Vec3(p4 + left);
   const int side = side_of(request, compensation_side, p0_guess, p4, left);
