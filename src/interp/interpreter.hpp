@@ -273,7 +273,10 @@ class Interpreter {
   bool hold_for_smooth_approach(PathElement& element);
   void release_smooth_approach(const Eigen::Vector3d* next_tangent);
   void emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,
-                                   const SarSpeeds& speeds);
+                                   const SarSpeeds& speeds, bool check_limits);
+  // 10720 for a SAR sub-movement beyond the software limits (its end, or a circle's extremes),
+  // reported at the SAR block.
+  void check_smooth_approach_limits(const PathElement& block_element, const geometry::Curve& curve) const;
   // Two straight lines by angles: holds the first ANG=, then runs the first line to the corner.
   bool hold_contour_angle(BlockContext& ctx, bool has_axis);
   void run_to_contour_corner(BlockContext& ctx);
@@ -381,6 +384,7 @@ class Interpreter {
     // The SAR block named no axis of the plane: P4 is the next motion block's end point, its
     // move the SAR contour's (Fundamentals, "Programming of end point P4").
     bool end_from_next = false;
+    bool check_limits = true;  // the software limits are checked at the SAR block (limits_checked)
   };
   std::optional<PendingApproach> sar_pending_;  // a SAR approach waiting for the next motion
   std::vector<PathElement> sar_held_;             // elements emitted meanwhile (after it in order)

@@ -8,6 +8,8 @@
 // from the clearance to the end point at the block's own speed (rapid when the block's motion is
 // G0).
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
@@ -103,7 +105,9 @@ void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_mo
     // The SAR block selects the compensation itself: the next block is not a selection block.
     compensation_selection_pending_ = false;
     const int side = side_sign(e.compensation.side);
-    sar_pending_ = PendingApproach{std::move(e), request, normal, radius, side, speeds, !block_names_plane_axis_};
+    const bool checked = limits_checked(ctx);
+    sar_pending_ =
+        PendingApproach{std::move(e), request, normal, radius, side, speeds, !block_names_plane_axis_, checked};
     return;
   }
   // Retraction: from the contour's end along its last direction. With G40 in the block the
@@ -125,8 +129,7 @@ void Interpreter::execute_smooth_approach(BlockContext& ctx, MotionMode modal_mo
     return;
   }
   position_ = pieces.back().curve->end();
-  check_limits(ctx, position_);
-  emit_smooth_approach_pieces(e, pieces, speeds);
+  emit_smooth_approach_pieces(e, pieces, speeds, limits_checked(ctx));
 }
 
 bool Interpreter::hold_for_smooth_approach(PathElement& element) {
@@ -164,7 +167,7 @@ void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
     }
     emit(std::move(pending.element));  // no contour to join: the straight move
   } else {
-    emit_smooth_approach_pieces(pending.element, pieces, pending.speeds);
+    emit_smooth_approach_pieces(pending.element, pieces, pending.speeds, pending.check_limits);
   }
   std::vector<PathElement> held = std::move(sar_held_);
   sar_held_.clear();
@@ -172,13 +175,36 @@ void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
   for (auto& h : held) emit(std::move(h));
 }
 
+void Interpreter::check_smooth_approach_limits(const PathElement& block_element, const geometry::Curve& curve) const {
+  const auto check = [&](const Vector3d& p) {
+    for (int i = 0; i < 3; ++i) {
+      const auto& axis = profile_.axes[static_cast<size_t>(i)];
+      if (p[i] < axis.min_mm - 1e-9 || p[i] > axis.max_mm + 1e-9) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf, "axis %s at %.3f mm on the smooth approach/retraction, limits %.3f .. %.3f mm",
+                      axis.name.c_str(), p[i], axis.min_mm, axis.max_mm);
+        const BlockRef& b = block_element.source;
+        throw AlarmError(make_alarm(10720, buf, {b.file_name(), b.line, 0}, b.text));
+      }
+    }
+  };
+  check(curve.end());
+  if (const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve); arc && arc->sweep() != 0.0) {
+    for (int i = 0; i < 3; ++i)
+      if (arc->axis_radius(i) > 1e-12)
+        arc->for_each_angle_inside(arc->axis_phase(i), std::numbers::pi,
+                                   [&](double phi) { check(arc->position_at_angle(phi)); });
+  }
+}
+
 void Interpreter::emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,
-                                              const SarSpeeds& speeds) {
+                                              const SarSpeeds& speeds, bool check_limits) {
   // Approach: the contour is the block's end (its F); retraction: the contour comes first. Every
   // piece keeps the block's compensation (on a retraction with G40: off, the pieces run on the
   // tool centre).
   const bool approach = pieces.back().contour;
   for (size_t i = 0; i < pieces.size(); ++i) {
+    if (check_limits) check_smooth_approach_limits(block_element, *pieces[i].curve);
     PathElement p = block_element;
     p.curve = pieces[i].curve;
     p.kind = dynamic_cast<const geometry::ArcCurve*>(p.curve.get()) ? ElementKind::Arc : ElementKind::Line;
