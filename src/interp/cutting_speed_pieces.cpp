@@ -23,9 +23,11 @@ int piece_count(double n_min, double n_max) {
   return std::clamp(static_cast<int>(std::ceil(std::log(n_max / n_min) / std::log(kStep))), 2, kMaxPieces);
 }
 
+}  // namespace
+
 // Piece k (1..pieces) of the element at the feed of its own harmonic-mean speed: every piece but
 // the last continues the block (one block in the report, no block change, no exact stop).
-PathElement piece_of(const PathElement& e, geometry::CurvePtr curve, double feed, int k, int pieces) {
+PathElement block_piece(const PathElement& e, geometry::CurvePtr curve, double feed, int k, int pieces) {
   PathElement piece = e;
   piece.curve = std::move(curve);
   piece.feed_mm_s = feed;
@@ -38,8 +40,6 @@ PathElement piece_of(const PathElement& e, geometry::CurvePtr curve, double feed
   return piece;
 }
 
-}  // namespace
-
 bool CuttingSpeedPieces::cut_line(const PathElement& e, const CuttingSpeedLaw& law) {
   const geometry::Vec3 a = e.curve->start(), b = e.curve->end();
   const double xa = law.x_at(a), xb = law.x_at(b);
@@ -51,7 +51,7 @@ bool CuttingSpeedPieces::cut_line(const PathElement& e, const CuttingSpeedLaw& l
     const double f0 = static_cast<double>(k - 1) / pieces, f1 = static_cast<double>(k) / pieces;
     const geometry::Vec3 to = k == pieces ? b : geometry::Vec3(a + (b - a) * f1);
     const double feed = e.feed_mm_s * rpm(law, xa + (xb - xa) * f0, xa + (xb - xa) * f1) / mean;
-    next_.consume(piece_of(e, std::make_shared<geometry::LineCurve>(from, to), feed, k, pieces));
+    next_.consume(block_piece(e, std::make_shared<geometry::LineCurve>(from, to), feed, k, pieces));
     from = to;
   }
   return true;
@@ -89,7 +89,7 @@ bool CuttingSpeedPieces::cut_arc(const PathElement& e, const CuttingSpeedLaw& la
     // speed is then exact where no limit binds (the chord's ends alone were off by Δφ²/12).
     const double x0 = x_at_share(f0), x1 = x_at_share(f1), shift = mean_x(f0, f1) - 0.5 * (x0 + x1);
     const double feed = e.feed_mm_s * rpm(law, x0 + shift, x1 + shift) / mean;
-    next_.consume(piece_of(e, std::move(sub), feed, k, pieces));
+    next_.consume(block_piece(e, std::move(sub), feed, k, pieces));
   }
   return true;
 }

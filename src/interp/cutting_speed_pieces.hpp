@@ -27,6 +27,11 @@
 
 namespace drycut::interp {
 
+// Piece k (1..pieces) of element e along `curve` at `feed`: every piece but the last continues
+// the block (one block in the report, no block change, no exact stop between them). Also the
+// G34/G35 thread's pieces (interpreter_curves.cpp).
+PathElement block_piece(const PathElement& e, geometry::CurvePtr curve, double feed, int k, int pieces);
+
 class CuttingSpeedPieces final : public ElementSink {
  public:
   explicit CuttingSpeedPieces(ElementSink& next) : next_(next) {}

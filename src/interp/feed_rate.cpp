@@ -16,12 +16,10 @@ FeedResult thread_feed(const ModalState& state, double rpm, double length, const
   if (travel < 1e-9) travel = length;
   const double lead = state.thread_lead_mm;
   double revolutions = travel / lead;
-  if (change > 0 && state.motion == MotionMode::ThreadIncreasing) {
-    revolutions = (std::sqrt(lead * lead + 2 * change * travel) - lead) / change;
-  } else if (change > 0 && state.motion == MotionMode::ThreadDecreasing) {
-    const double root = lead * lead - 2 * change * travel;
-    if (root < 0) return {0, 14800, "G35: the lead would reach zero inside the block"};
-    revolutions = (lead - std::sqrt(root)) / change;
+  const bool lead_changes = state.motion == MotionMode::ThreadIncreasing || state.motion == MotionMode::ThreadDecreasing;
+  if (change > 0 && lead_changes) {
+    revolutions = lead_change_revolutions(travel, lead, change, state.motion == MotionMode::ThreadIncreasing);
+    if (revolutions < 0) return {0, 14800, "G35: the lead would reach zero inside the block"};
   }
   const double minutes = revolutions / rpm;
   if (!(minutes > 0)) return {lead * rpm / 60.0, 0, ""};
@@ -29,6 +27,13 @@ FeedResult thread_feed(const ModalState& state, double rpm, double length, const
 }
 
 }  // namespace
+
+double lead_change_revolutions(double travel, double lead, double change, bool increasing) {
+  if (!(change > 0)) return travel / lead;
+  if (increasing) return (std::sqrt(lead * lead + 2 * change * travel) - lead) / change;
+  const double root = lead * lead - 2 * change * travel;
+  return root < 0 ? -1.0 : (lead - std::sqrt(root)) / change;
+}
 
 FeedResult path_feed(const ModalState& state, double spindle_rpm, double length_mm, const Eigen::Vector3d& chord,
                      double lead_change_mm) {

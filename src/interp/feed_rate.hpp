@@ -24,6 +24,11 @@ struct FeedResult {
   std::string detail;
 };
 
+// Revolutions of a G34 (increasing) / G35 thread over `travel` mm of its lead axis, from the lead
+// P and the change c per revolution (the formulas above); negative when a G35 lead would reach
+// zero within the travel.
+double lead_change_revolutions(double travel, double lead, double change, bool increasing);
+
 // `spindle_rpm` is the speed the spindle turns at (0 = stopped; G96 already resolved),
 // `chord` the block's end minus start, `lead_change_mm` the F of a G34/G35 block.
 FeedResult path_feed(const ModalState& state, double spindle_rpm, double length_mm,

@@ -187,6 +187,7 @@ class Interpreter {
   bool execute_axis_instruction(BlockContext& ctx);
   // A block with an end point or a full circle (interpreter_curves.cpp): spline point or element.
   void move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> extra);
+  void emit_lead_change_thread(BlockContext& ctx, PathElement&& e);  // G34/G35 in pieces
   // The element of a G0/G1 or circle block from the current position (nothing emitted yet).
   PathElement build_line(BlockContext& ctx, const Eigen::Vector3d& target);
   PathElement build_arc(BlockContext& ctx, const Target& target);

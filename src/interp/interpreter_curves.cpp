@@ -1,9 +1,12 @@
 // The curves of motion blocks: lines, circles (all G2/G3/CIP/CT forms, built in the workpiece
 // system and mapped through the frame) and spline runs.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <typeinfo>
 
+#include "interp/cutting_speed_pieces.hpp"
+#include "interp/feed_rate.hpp"
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
 #include "interp/interpreter.hpp"
@@ -53,7 +56,42 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   position_ = e.curve->end();
   if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
   if (arc) check_arc_limits(ctx, *e.curve);
+  if (ctx.lead_change_mm > 0 && !arc && e.curve->length() > 0 && !e.rapid && e.feed_mm_s > 0 &&
+      (state_.motion == MotionMode::ThreadIncreasing || state_.motion == MotionMode::ThreadDecreasing)) {
+    emit_lead_change_thread(ctx, std::move(e));
+    return;
+  }
   emit(std::move(e));
+}
+
+// G34/G35: the lead, and with it the feed at a constant spindle speed, changes every revolution
+// (Fundamentals, "Linear progressive/degressive lead change (G34, G35)"). The block is emitted as
+// pieces of equal length, one per revolution (2 to 16), each at its exact mean feed: the block's
+// time stays the closed form's (feed_rate.hpp), and the feed a trace or a dip shows rises (falls)
+// along the thread instead of standing at the block's mean.
+void Interpreter::emit_lead_change_thread(BlockContext& ctx, PathElement&& e) {
+  const Vector3d a = e.curve->start(), b = e.curve->end();
+  const double length = e.curve->length();
+  double travel = std::abs((b - a)[state_.thread_lead_axis]);
+  if (travel < 1e-9) travel = length;
+  const bool increasing = state_.motion == MotionMode::ThreadIncreasing;
+  const double lead = state_.thread_lead_mm, change = ctx.lead_change_mm;
+  const double total = lead_change_revolutions(travel, lead, change, increasing);
+  if (!(total > 0)) {
+    emit(std::move(e));
+    return;
+  }
+  const int pieces = std::clamp(static_cast<int>(std::ceil(total)), 2, 16);
+  const double block_time = length / e.feed_mm_s;
+  double before = 0.0;
+  for (int k = 1; k <= pieces; ++k) {
+    const double n = lead_change_revolutions(travel * k / pieces, lead, change, increasing);
+    const Vector3d from = a + (b - a) * (k - 1) / pieces, to = k == pieces ? b : Vector3d(a + (b - a) * k / pieces);
+    PathElement p = block_piece(e, line_curve(from, to), (length / pieces) / (block_time * (n - before) / total), k, pieces);
+    if (k > 1) p.run_up_start = 0;
+    before = n;
+    emit(std::move(p));
+  }
 }
 
 // A circle reaches beyond its end points where an axis's coordinate turns: at the angles

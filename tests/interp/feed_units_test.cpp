@@ -115,17 +115,29 @@ TEST(Feeds, ThreadTimeIsLengthOverLeadTimesSpeed) {
 
 TEST(Feeds, VariableLeadThreads) {
   // G34 K1 F0.1 over 20 mm: 20 = N + 0.05 N² -> N = (√5 − 1)/0.1 = 12.3607 rev; at S1000 the
-  // block lasts N/1000 min: v = 20 / (N/1000) mm/min.
+  // block lasts N/1000 min. It comes as pieces (one per revolution, at most 16) at their mean
+  // feeds: their times add up to the block's, and the feed rises from piece to piece.
+  const auto block_minutes = [](const std::vector<PathElement>& motions, const std::string& label) {
+    double t = 0;
+    for (const auto& m : motions)
+      if (m.label == label) t += m.curve->length() / m.feed_mm_s / 60;
+    return t;
+  };
   auto up = run_program("S1000 M3\nG0 Z0\nG1 F600\nG34 Z-20 K1 F0.1\nG1 X5\nM30\n");
   ASSERT_FALSE(up->alarm) << up->alarm->format();
   const double n_up = (std::sqrt(5.0) - 1) / 0.1;
-  EXPECT_NEAR(up->sink.motions()[1].feed_mm_s, 20.0 / (n_up / 1000) / 60, 1e-9);
-  EXPECT_NEAR(up->sink.motions()[2].feed_mm_s, 10.0, 1e-12);  // the F of G34 left F600 alone
-  // G35 K2 F0.1 over 10 mm: N = (2 − √2)/0.1 = 5.8579 rev.
+  const auto up_motions = up->sink.motions();
+  EXPECT_NEAR(block_minutes(up_motions, "G34"), n_up / 1000, 1e-12);
+  ASSERT_EQ(up_motions.size(), 1 + 13 + 1u);  // G0, 13 pieces (12.36 revolutions), G1
+  EXPECT_LT(up_motions[1].feed_mm_s, up_motions[13].feed_mm_s);
+  EXPECT_NEAR(up_motions[14].feed_mm_s, 10.0, 1e-12);  // the F of G34 left F600 alone
+  // G35 K2 F0.1 over 10 mm: N = (2 − √2)/0.1 = 5.8579 rev; the feed falls.
   auto down = run_program("S1000 M3\nG0 Z0\nG35 Z-10 K2 F0.1\nM30\n");
   ASSERT_FALSE(down->alarm) << down->alarm->format();
   const double n_down = (2 - std::sqrt(2.0)) / 0.1;
-  EXPECT_NEAR(down->sink.motions()[1].feed_mm_s, 10.0 / (n_down / 1000) / 60, 1e-9);
+  const auto down_motions = down->sink.motions();
+  EXPECT_NEAR(block_minutes(down_motions, "G35"), n_down / 1000, 1e-12);
+  EXPECT_GT(down_motions[1].feed_mm_s, down_motions.back().feed_mm_s);
   // G35 K1 F0.1 over 10 mm: 1 − 2 < 0, the lead would reach zero: alarm 14800.
   auto zero = run_program("S1000 M3\nG0 Z0\nG35 Z-10 K1 F0.1\nM30\n");
   ASSERT_TRUE(zero->alarm);
