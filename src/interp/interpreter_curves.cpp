@@ -56,7 +56,8 @@ void Interpreter::move_to_target(BlockContext& ctx, std::vector<ExtraAxisMove> e
   position_ = e.curve->end();
   if (position_ != target) check_limits(ctx, position_);  // a line ends at the target, checked above
   if (arc) check_arc_limits(ctx, *e.curve);
-  if (ctx.lead_change_mm > 0 && !arc && e.curve->length() > 0 && !e.rapid && e.feed_mm_s > 0 &&
+  // (Extra axes would travel once per piece: such a thread stays one block at its mean feed.)
+  if (ctx.lead_change_mm > 0 && !arc && e.curve->length() > 0 && !e.rapid && e.feed_mm_s > 0 && e.extra_axes.empty() &&
       (state_.motion == MotionMode::ThreadIncreasing || state_.motion == MotionMode::ThreadDecreasing)) {
     emit_lead_change_thread(ctx, std::move(e));
     return;
@@ -81,7 +82,7 @@ void Interpreter::emit_lead_change_thread(BlockContext& ctx, PathElement&& e) {
     emit(std::move(e));
     return;
   }
-  const int pieces = std::clamp(static_cast<int>(std::ceil(total)), 2, 16);
+  const int pieces = static_cast<int>(std::ceil(std::clamp(total, 2.0, 16.0)));  // clamped before the cast
   const double block_time = length / e.feed_mm_s;
   double before = 0.0;
   for (int k = 1; k <= pieces; ++k) {
