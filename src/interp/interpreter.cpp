@@ -593,15 +593,20 @@ void Interpreter::emit_control(BlockContext& ctx, ElementKind kind, std::string 
 
 void Interpreter::check_limits(const BlockContext& ctx, const Vector3d& target) {
   if (!limits_checked(ctx)) return;
+  if (const auto violation = limit_violation(target)) raise(ctx, 10720, *violation);
+}
+
+std::optional<std::string> Interpreter::limit_violation(const Vector3d& p) const {
   for (int i = 0; i < 3; ++i) {
     const auto& axis = profile_.axes[static_cast<size_t>(i)];
-    if (target[i] < axis.min_mm - 1e-9 || target[i] > axis.max_mm + 1e-9) {
+    if (p[i] < axis.min_mm - 1e-9 || p[i] > axis.max_mm + 1e-9) {
       char buf[160];
-      std::snprintf(buf, sizeof buf, "axis %s at %.3f mm, limits %.3f .. %.3f mm", axis.name.c_str(),
-                    target[i], axis.min_mm, axis.max_mm);
-      raise(ctx, 10720, buf);
+      std::snprintf(buf, sizeof buf, "axis %s at %.3f mm, limits %.3f .. %.3f mm", axis.name.c_str(), p[i],
+                    axis.min_mm, axis.max_mm);
+      return std::string(buf);
     }
   }
+  return std::nullopt;
 }
 
 void Interpreter::refuse_compensation_change_on_curve(const BlockContext& ctx, bool moves) const {

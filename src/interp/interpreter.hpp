@@ -283,6 +283,8 @@ class Interpreter {
   void run_to_contour_corner(BlockContext& ctx);
   void check_limits(const BlockContext& ctx, const Eigen::Vector3d& target);
   void check_arc_limits(const BlockContext& ctx, const geometry::Curve& curve);
+  // The software limit switch a machine point violates (10720's detail), if any.
+  std::optional<std::string> limit_violation(const Eigen::Vector3d& p) const;
   // TRANSMIT/TRACYL/TRAANG/TRAORI on, TRAFOOF off (transformation_limits.cpp); false when the
   // word is none of them.
   bool apply_transformation_command(const parser::CommandWord& c);

@@ -104,11 +104,7 @@ void Interpreter::check_arc_limits(const BlockContext& ctx, const geometry::Curv
   if (typeid(curve) != typeid(geometry::ArcCurve)) return;
   const auto& arc = static_cast<const geometry::ArcCurve&>(curve);
   if (arc.sweep() == 0.0 || arc.radius() <= 0.0) return;
-  for (int i = 0; i < 3; ++i) {
-    if (arc.axis_radius(i) < 1e-12) continue;  // along the normal
-    arc.for_each_angle_inside(arc.axis_phase(i), std::numbers::pi,
-                              [&](double phi) { check_limits(ctx, arc.position_at_angle(phi)); });
-  }
+  arc.for_each_axis_extreme([&](const Vector3d& p) { check_limits(ctx, p); });
 }
 
 void Interpreter::attach_cutting_speed_law(BlockContext& ctx, PathElement& e) {

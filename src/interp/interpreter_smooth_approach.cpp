@@ -8,8 +8,6 @@
 // from the clearance to the end point at the block's own speed (rapid when the block's motion is
 // G0).
 #include <cmath>
-#include <cstdio>
-#include <numbers>
 
 #include "interp/geometry/arc_curve.hpp"
 #include "interp/geometry/line_curve.hpp"
@@ -177,24 +175,14 @@ void Interpreter::release_smooth_approach(const Vector3d* next_tangent) {
 
 void Interpreter::check_smooth_approach_limits(const PathElement& block_element, const geometry::Curve& curve) const {
   const auto check = [&](const Vector3d& p) {
-    for (int i = 0; i < 3; ++i) {
-      const auto& axis = profile_.axes[static_cast<size_t>(i)];
-      if (p[i] < axis.min_mm - 1e-9 || p[i] > axis.max_mm + 1e-9) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "axis %s at %.3f mm on the smooth approach/retraction, limits %.3f .. %.3f mm",
-                      axis.name.c_str(), p[i], axis.min_mm, axis.max_mm);
-        const BlockRef& b = block_element.source;
-        throw AlarmError(make_alarm(10720, buf, {b.file_name(), b.line, 0}, b.text));
-      }
+    if (const auto violation = limit_violation(p)) {
+      const BlockRef& b = block_element.source;
+      throw AlarmError(make_alarm(10720, *violation + " (smooth approach/retraction)", {b.file_name(), b.line, 0}, b.text));
     }
   };
   check(curve.end());
-  if (const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve); arc && arc->sweep() != 0.0) {
-    for (int i = 0; i < 3; ++i)
-      if (arc->axis_radius(i) > 1e-12)
-        arc->for_each_angle_inside(arc->axis_phase(i), std::numbers::pi,
-                                   [&](double phi) { check(arc->position_at_angle(phi)); });
-  }
+  if (const auto* arc = dynamic_cast<const geometry::ArcCurve*>(&curve); arc && arc->sweep() != 0.0)
+    arc->for_each_axis_extreme(check);
 }
 
 void Interpreter::emit_smooth_approach_pieces(const PathElement& block_element, const std::vector<SarPiece>& pieces,

@@ -7,6 +7,7 @@
 // with c = axial_travel / sweep (mm per radian).
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "interp/geometry/curve.hpp"
 #include "interp/geometry/plane.hpp"
@@ -51,6 +52,15 @@ class ArcCurve final : public Curve {
   }
   // The point at angle phi (the helix's axial part in proportion to phi − start_angle).
   Vec3 position_at_angle(double phi) const;
+  // Calls f(point) at every point strictly inside the sweep where an axis's coordinate turns
+  // (α_i + k·π: its extremes, where the software limits are checked besides the ends).
+  template <typename F>
+  void for_each_axis_extreme(F&& f) const {
+    for (int i = 0; i < 3; ++i) {
+      if (axis_radius(i) < 1e-12) continue;  // along the normal
+      for_each_angle_inside(axis_phase(i), std::numbers::pi, [&](double phi) { f(position_at_angle(phi)); });
+    }
+  }
 
  private:
   Vec3 centre_;
